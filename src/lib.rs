@@ -1,0 +1,12 @@
+//! demsweep: a deterministic 2D bonded-disk discrete element method (DEM) for concrete
+//! penetration, scabbing and perforation, with the classical empirical formulas beside it.
+//!
+//! Data flows one way: scene file → [`scene::Scene`] → [`kernel::Model`] → outcome → tables.
+//! Internal units are SI (m, kg, s, N, Pa); customary units appear only at the edges
+//! ([`units`]) and every public quantity names its unit.
+
+pub mod units;
+pub mod cli;
+pub mod error;
+
+pub use error::{Error, Result};
