@@ -10,3 +10,6 @@ pub mod cli;
 pub mod error;
 
 pub use error::{Error, Result};
+pub mod kernel;
+pub mod lattice;
+pub mod material;

@@ -1,0 +1,65 @@
+//! Stage 1 of a step, contact processing: every contact's force from the current positions and
+//! the previous half-step velocities. Each contact writes only its own entry, so the stage runs
+//! in parallel chunks with results independent of the thread count; dissipation is summed per
+//! fixed-size chunk and the chunk sums are added in chunk order (deterministic).
+
+use rayon::prelude::*;
+
+use super::contacts::{Bond, Contact, ContactForce};
+use super::law::{self, ContactClass, Dissipation, Kinematics};
+use super::state::Elements;
+
+/// Contacts per chunk: fixed, so partial sums do not depend on the number of threads.
+pub const CHUNK: usize = 2048;
+
+/// Compute all contact forces. `partial` must hold one entry per chunk.
+pub fn process<const DAMP: bool>(
+    el: &Elements,
+    list: &mut [Contact],
+    force: &mut [ContactForce],
+    classes: &[ContactClass],
+    dt_s: f64,
+    partial: &mut [Dissipation],
+    parallel: bool,
+) {
+    let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation)| {
+        *d = Dissipation::default();
+        for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
+            *f = one::<DAMP>(el, c, classes, dt_s, d);
+        }
+    };
+    if parallel {
+        list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).for_each(run);
+    } else {
+        list.chunks_mut(CHUNK).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).for_each(run);
+    }
+}
+
+#[inline(always)]
+fn one<const DAMP: bool>(el: &Elements, c: &mut Contact, classes: &[ContactClass], dt_s: f64, d: &mut Dissipation) -> ContactForce {
+    let (i, j) = (c.i as usize, c.j as usize);
+    let (pi, pj) = (el.pos[i], el.pos[j]);
+    let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
+    let d2 = dx * dx + dy * dy;
+    if c.bond == Bond::Frictional && d2 >= c.d0 * c.d0 {
+        c.ut = 0.0;
+        return ContactForce::default();
+    }
+    let k = &classes[c.class as usize];
+    let dist = d2.sqrt();
+    let inv = 1.0 / dist;
+    let (nx, ny) = (dx * inv, dy * inv);
+    let (vi, vj) = (el.vel[i], el.vel[j]);
+    let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
+    let (li, lj) = (dist * k.lever_i, dist * k.lever_j);
+    let g = Kinematics {
+        d_m: dist,
+        nx,
+        ny,
+        vn_mps: dvx * nx + dvy * ny,
+        vt_mps: -dvx * ny + dvy * nx - li * vi[2] - lj * vj[2],
+        li_m: li,
+        lj_m: lj,
+    };
+    law::interact::<DAMP>(c, k, &g, dt_s, d)
+}

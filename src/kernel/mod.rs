@@ -1,0 +1,247 @@
+//! The DEM kernel. A step is the source's three stages (seed 000 §2):
+//!
+//! 1. **contact processing** (`forces`): every contact's force from the current positions;
+//! 2. **element motion** (`integrate`): gather forces, central-difference update, blow-up watch;
+//! 3. **contact detection** (`detect`): when any element has drifted more than half the
+//!    neighbour skin since the last rebuild, rebuild the candidate pairs, keeping bonds and
+//!    touching frictional contacts with their history and dropping separated ones.
+
+pub mod boundary;
+pub mod build;
+pub mod contacts;
+pub mod detect;
+pub mod energy;
+pub mod forces;
+pub mod integrate;
+pub mod law;
+pub mod stability;
+pub mod state;
+
+use boundary::{LoadGroup, MotionGroup};
+use contacts::{Bond, Contact, Contacts};
+use detect::BroadPhase;
+use energy::Ledger;
+use integrate::{Drive, MotionParams, MotionReport};
+use law::{ContactClass, Dissipation};
+use state::Elements;
+
+use crate::error::{Error, Result};
+
+pub use build::{ModelBuilder, StepChoice};
+
+/// Contacts below which a model steps on one thread (rayon's fork–join costs more than the
+/// work). Results do not depend on it: chunking, not threading, fixes the summation order.
+pub const PARALLEL_MIN_CONTACTS: usize = 16_384;
+
+/// How the time step was chosen.
+#[derive(Debug, Clone, PartialEq)]
+pub struct StepInfo {
+    /// Bound on the top frequency used, rad/s.
+    pub omega_bound_rad_per_s: f64,
+    /// Damping ratio at that frequency from the stiffness-proportional term.
+    pub xi_at_bound: f64,
+    /// Stability limit from the bound, s.
+    pub dt_bound_s: f64,
+    /// Safety factor applied (1 when the scene fixed the step).
+    pub safety: f64,
+    /// Step used, s.
+    pub dt_s: f64,
+    /// What limited the step and how the bound was obtained.
+    pub detail: String,
+}
+
+/// A model ready to step.
+#[derive(Debug, Clone)]
+pub struct Model {
+    /// Elements.
+    pub el: Elements,
+    /// Contacts.
+    pub contacts: Contacts,
+    /// Contact classes.
+    pub classes: Vec<ContactClass>,
+    /// Class of a new contact between kinds a and b: `class_of[a * kinds + b]`.
+    class_of: Vec<u16>,
+    kinds: usize,
+    /// Prescribed-motion groups.
+    pub motions: Vec<MotionGroup>,
+    /// Load groups.
+    pub loads: Vec<LoadGroup>,
+    /// Motion-stage parameters (Δt, α, gravity, speed limit).
+    pub motion: MotionParams,
+    /// Stiffness-proportional damping present (dashpot part on).
+    damped: bool,
+    /// Neighbour skin, m.
+    pub skin_m: f64,
+    rebuild_pos: Vec<[f64; 2]>,
+    broad: BroadPhase,
+    pairs: Vec<(u32, u32)>,
+    diss_partial: Vec<Dissipation>,
+    motion_partial: Vec<MotionReport>,
+    load_now: Vec<[f64; 2]>,
+    motion_now: Vec<[f64; 3]>,
+    /// Energy ledger.
+    pub ledger: Ledger,
+    /// Simulated time, s.
+    pub time_s: f64,
+    /// Completed steps.
+    pub steps: u64,
+    /// Neighbour rebuilds so far.
+    pub rebuilds: u64,
+    /// Time-step choice.
+    pub step_info: StepInfo,
+}
+
+impl Model {
+    /// Time step, s.
+    pub fn dt_s(&self) -> f64 {
+        self.motion.dt_s
+    }
+
+    /// Advance one step. On blow-up the error names the step and the element; the state is
+    /// then unusable (the caller must not write it out).
+    pub fn step(&mut self) -> Result<()> {
+        self.process_contacts();
+        let drift2_m2 = self.move_elements()?;
+        self.detect_contacts(drift2_m2);
+        self.steps += 1;
+        self.time_s = self.steps as f64 * self.motion.dt_s;
+        Ok(())
+    }
+
+    /// Advance `n` steps.
+    pub fn run_steps(&mut self, n: u64) -> Result<()> {
+        for _ in 0..n {
+            self.step()?;
+        }
+        Ok(())
+    }
+
+    fn parallel(&self) -> bool {
+        self.contacts.len() >= PARALLEL_MIN_CONTACTS && rayon::current_num_threads() > 1
+    }
+
+    fn process_contacts(&mut self) {
+        let parallel = self.parallel();
+        let n_chunks = self.contacts.len().div_ceil(forces::CHUNK);
+        self.diss_partial.resize(n_chunks, Dissipation::default());
+        let Contacts { list, force, .. } = &mut self.contacts;
+        let args = (&self.el, &mut list[..], &mut force[..], &self.classes[..], self.motion.dt_s);
+        if self.damped {
+            forces::process::<true>(args.0, args.1, args.2, args.3, args.4, &mut self.diss_partial, parallel);
+        } else {
+            forces::process::<false>(args.0, args.1, args.2, args.3, args.4, &mut self.diss_partial, parallel);
+        }
+        let mut total = Dissipation::default();
+        for d in &self.diss_partial {
+            total.add(d);
+        }
+        let l = &mut self.ledger;
+        l.plastic_j += total.plastic_j;
+        l.fracture_j += total.fracture_j;
+        l.friction_j += total.friction_j;
+        l.contact_damping_j += total.damping_j;
+        l.bonds_broken += total.broken as u64;
+    }
+
+    /// Returns the largest squared drift since the last neighbour rebuild, m².
+    fn move_elements(&mut self) -> Result<f64> {
+        let t = self.time_s;
+        let half = t + 0.5 * self.motion.dt_s;
+        self.load_now.clear();
+        self.load_now.extend(self.loads.iter().map(|g| {
+            let s = g.profile.at(t) / g.count.max(1) as f64;
+            [g.force_n[0] * s, g.force_n[1] * s]
+        }));
+        self.motion_now.clear();
+        self.motion_now.extend(self.motions.iter().map(|g| {
+            let s = g.profile.at(half);
+            [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
+        }));
+        let parallel = self.parallel();
+        let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
+        self.motion_partial.resize(n_chunks, MotionReport::default());
+        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now };
+        integrate::advance(&mut self.el, &self.contacts, &self.rebuild_pos, drive, self.motion, &mut self.motion_partial, parallel);
+        let mut total = MotionReport::default();
+        for r in &self.motion_partial {
+            total.merge(r);
+        }
+        if total.first_bad != usize::MAX {
+            let e = total.first_bad;
+            let v = self.el.vel[e];
+            return Err(Error::BlowUp {
+                step: self.steps,
+                time_s: self.time_s,
+                element: e,
+                detail: format!(
+                    "velocity ({:.3e}, {:.3e}) m/s, spin {:.3e} rad/s exceeds the speed limit {:.3e} m/s or is not finite \
+                     (time step {:.4e} s; stability bound {:.4e} s)",
+                    v[0], v[1], v[2], self.motion.speed_limit_mps, self.motion.dt_s, self.step_info.dt_bound_s
+                ),
+            });
+        }
+        self.ledger.mass_damping_j += total.mass_damping_j;
+        self.ledger.external_j += total.external_j;
+        Ok(total.max_drift2_m2)
+    }
+
+    /// New pairs can only come within reach once some element has moved half the skin: until
+    /// then the candidate list is complete (each contact checks touching itself every step).
+    fn detect_contacts(&mut self, drift2_m2: f64) {
+        if drift2_m2 > 0.25 * self.skin_m * self.skin_m {
+            self.rebuild_neighbours();
+        }
+    }
+
+    /// Rebuild the candidate pairs from the current positions (broad phase + merge).
+    pub fn rebuild_neighbours(&mut self) {
+        let n = self.el.len();
+        let pos = &self.el.pos;
+        self.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, self.skin_m, &mut self.pairs);
+        let el = &self.el;
+        let (class_of, kinds) = (&self.class_of, self.kinds);
+        let touching = |c: &Contact| {
+            let (pi, pj) = (el.pos[c.i as usize], el.pos[c.j as usize]);
+            (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.d0 * c.d0
+        };
+        let fresh = |i: u32, j: u32| {
+            let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
+            Contact::frictional(i, j, class_of[a * kinds + b], el.radius[i as usize] + el.radius[j as usize])
+        };
+        let admit = |i: u32, j: u32| !(el.is_kinematic(i as usize) && el.is_kinematic(j as usize));
+        self.contacts.merge_candidates(&self.pairs, touching, fresh, admit, n);
+        self.rebuild_pos.clear();
+        self.rebuild_pos.extend(self.el.pos.iter().map(|p| [p[0], p[1]]));
+        self.rebuilds += 1;
+    }
+
+    /// Elastic energy in the contacts, J.
+    pub fn strain_energy_j(&self) -> f64 {
+        energy::strain_energy_j(&self.el, &self.contacts.list, &self.classes)
+    }
+
+    /// Energy balance residual, J (see `energy::Ledger::residual_j`).
+    pub fn energy_residual_j(&self) -> f64 {
+        self.ledger.residual_j(self.el.kinetic_energy_j(), self.strain_energy_j())
+    }
+
+    /// Number of intact bonds.
+    pub fn intact_bonds(&self) -> usize {
+        self.contacts.list.iter().filter(|c| c.bond == Bond::Intact).count()
+    }
+
+    /// Sum of the forces on a set of elements in the last step, [N, N].
+    pub fn force_on(&self, elements: &[usize]) -> [f64; 2] {
+        elements.iter().fold([0.0, 0.0], |a, &e| [a[0] + self.el.force[e][0], a[1] + self.el.force[e][1]])
+    }
+
+    /// Mean displacement of a set of elements from their initial positions, [m, m].
+    pub fn mean_displacement_m(&self, elements: &[usize]) -> [f64; 2] {
+        let s = elements.iter().fold([0.0, 0.0], |a, &e| {
+            let d = self.el.displacement_m(e);
+            [a[0] + d[0], a[1] + d[1]]
+        });
+        let n = elements.len().max(1) as f64;
+        [s[0] / n, s[1] / n]
+    }
+}
