@@ -342,6 +342,7 @@ impl ModelBuilder {
         debug_assert_eq!(model.el.len(), n);
         model.rebuild_neighbours();
         model.rebuilds = 0;
+        model.prime();
         model.ledger.initial_j = model.el.kinetic_energy_j() + model.strain_energy_j();
         Ok(model)
     }

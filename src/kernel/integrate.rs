@@ -69,6 +69,39 @@ pub struct Drive<'a> {
     pub motion_velocity: &'a [[f64; 3]],
 }
 
+/// Generalised force on element `e` from its contacts, its load group and gravity, and the
+/// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts are summed in
+/// the adjacency's fixed order.
+#[inline(always)]
+fn total_force(e: usize, contacts: &Contacts, mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
+    let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
+    let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
+    for &a in &contacts.adj[s..t] {
+        let cf = &contacts.force[(a >> 1) as usize];
+        if a & 1 == 0 {
+            fx += cf.fx;
+            fy += cf.fy;
+            tz += cf.ti;
+        } else {
+            fx -= cf.fx;
+            fy -= cf.fy;
+            tz += cf.tj;
+        }
+    }
+    let (mut ex, mut ey) = (mass_kg * gravity[0], mass_kg * gravity[1]);
+    if load != 0 {
+        let l = drive.load_force_n[load as usize - 1];
+        ex += l[0];
+        ey += l[1];
+    }
+    ([fx + ex, fy + ey, tz], [ex, ey])
+}
+
+/// Forces of every element for the current contact forces (no motion), as `advance` would see them.
+pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
+    (0..el.len()).map(|e| total_force(e, contacts, el.mass[e], el.load[e], drive, gravity).0).collect()
+}
+
 /// Advance every element by one step.
 pub fn advance(
     el: &mut Elements,
@@ -89,29 +122,8 @@ pub fn advance(
         let mut r = MotionReport::default();
         for (o, ((x, v), f)) in ps.iter_mut().zip(vs.iter_mut()).zip(fs.iter_mut()).enumerate() {
             let e = k * CHUNK + o;
-            let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
-            let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
-            for &a in &contacts.adj[s..t] {
-                let cf = &contacts.force[(a >> 1) as usize];
-                if a & 1 == 0 {
-                    fx += cf.fx;
-                    fy += cf.fy;
-                    tz += cf.ti;
-                } else {
-                    fx -= cf.fx;
-                    fy -= cf.fy;
-                    tz += cf.tj;
-                }
-            }
             let m = mass[e];
-            let (mut ex, mut ey) = (m * p.gravity_mps2[0], m * p.gravity_mps2[1]);
-            if load[e] != 0 {
-                let l = drive.load_force_n[load[e] as usize - 1];
-                ex += l[0];
-                ey += l[1];
-            }
-            fx += ex;
-            fy += ey;
+            let ([fx, fy, tz], [ex, ey]) = total_force(e, contacts, m, load[e], drive, p.gravity_mps2);
             *f = [fx, fy, tz];
             let v0 = *v;
             let v1 = if motion[e] != 0 {

@@ -145,18 +145,7 @@ impl Model {
 
     /// Returns the largest squared drift since the last neighbour rebuild, m².
     fn move_elements(&mut self) -> Result<f64> {
-        let t = self.time_s;
-        let half = t + 0.5 * self.motion.dt_s;
-        self.load_now.clear();
-        self.load_now.extend(self.loads.iter().map(|g| {
-            let s = g.profile.at(t) / g.count.max(1) as f64;
-            [g.force_n[0] * s, g.force_n[1] * s]
-        }));
-        self.motion_now.clear();
-        self.motion_now.extend(self.motions.iter().map(|g| {
-            let s = g.profile.at(half);
-            [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
-        }));
+        self.update_drive();
         let parallel = self.parallel();
         let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
         self.motion_partial.resize(n_chunks, MotionReport::default());
@@ -183,6 +172,43 @@ impl Model {
         self.ledger.mass_damping_j += total.mass_damping_j;
         self.ledger.external_j += total.external_j;
         Ok(total.max_drift2_m2)
+    }
+
+    /// Loads at t, prescribed velocities at t + Δt/2 (the midpoint rule moves a kinematic
+    /// element exactly along a prescribed velocity that is linear over the step).
+    fn update_drive(&mut self) {
+        let (t, half) = (self.time_s, self.time_s + 0.5 * self.motion.dt_s);
+        self.load_now.clear();
+        self.load_now.extend(self.loads.iter().map(|g| {
+            let s = g.profile.at(t) / g.count.max(1) as f64;
+            [g.force_n[0] * s, g.force_n[1] * s]
+        }));
+        self.motion_now.clear();
+        self.motion_now.extend(self.motions.iter().map(|g| {
+            let s = g.profile.at(half);
+            [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
+        }));
+    }
+
+    /// Put the free elements' velocities half a step back, v(−Δt/2) = v(0) − (Δt/2) a(0), so
+    /// that the given initial velocities are the ones at t = 0 and central differences start
+    /// at second order (a free fall is then exact). Contact history is not touched.
+    pub(crate) fn prime(&mut self) {
+        self.update_drive();
+        let mut probe = self.contacts.clone();
+        let n_chunks = probe.len().div_ceil(forces::CHUNK);
+        let mut partial = vec![Dissipation::default(); n_chunks];
+        let Contacts { list, force, .. } = &mut probe;
+        forces::process::<false>(&self.el, list, force, &self.classes, 0.0, &mut partial, false);
+        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now };
+        let f = integrate::forces_now(&self.el, &probe, drive, self.motion.gravity_mps2);
+        let h = 0.5 * self.motion.dt_s;
+        for (e, fe) in f.iter().enumerate() {
+            let v = &mut self.el.vel[e];
+            v[0] -= h * fe[0] * self.el.inv_mass[e];
+            v[1] -= h * fe[1] * self.el.inv_mass[e];
+            v[2] -= h * fe[2] * self.el.inv_inertia[e];
+        }
     }
 
     /// New pairs can only come within reach once some element has moved half the skin: until

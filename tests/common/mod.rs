@@ -1,0 +1,39 @@
+//! Shared test helpers: materials and small scenes.
+#![allow(dead_code)]
+
+use demsweep::material::{FailureCriterion, Material, PoissonPolicy};
+
+/// The cracked-plate concrete of seed §4–5: E = 29.7 GPa, ν = 0.3, σ_ult = 3.44 MPa,
+/// K_Ic = 1 MPa√m.
+pub fn plate_concrete(failure: FailureCriterion) -> Material {
+    Material {
+        name: "concrete".into(),
+        density_kg_per_m3: 2400.0,
+        youngs_modulus_pa: 29.7e9,
+        poisson_ratio: 0.3,
+        tensile_strength_pa: 3.44e6,
+        compressive_strength_pa: 30e6,
+        fracture_toughness_pa_sqrt_m: 1.0e6,
+        friction_coefficient: 0.5,
+        cohesion_n_per_m: 0.0,
+        failure,
+        poisson_policy: PoissonPolicy::Refuse,
+    }
+}
+
+/// An elastic material that never breaks.
+pub fn elastic(e_pa: f64, nu: f64, rho: f64) -> Material {
+    Material {
+        name: "elastic".into(),
+        density_kg_per_m3: rho,
+        youngs_modulus_pa: e_pa,
+        poisson_ratio: nu,
+        tensile_strength_pa: 1.0,
+        compressive_strength_pa: 1.0,
+        fracture_toughness_pa_sqrt_m: 1.0,
+        friction_coefficient: 0.5,
+        cohesion_n_per_m: 0.0,
+        failure: FailureCriterion::None,
+        poisson_policy: PoissonPolicy::Refuse,
+    }
+}

@@ -1,0 +1,138 @@
+//! Unit cell: a close-packed patch under uniaxial stress recovers E and ν (eq 3.1–3.2), in
+//! plane strain and plane stress, for ν* ≤ 1/3. The patch is loaded at its left and right edges
+//! and relaxed dynamically (mass-proportional damping); stress and strain are measured in the
+//! interior, away from the edges: strain from a least-squares fit of the displacement gradient,
+//! stress from the bond virial.
+
+mod common;
+
+use demsweep::kernel::boundary::{LoadGroup, Profile};
+use demsweep::kernel::{Model, ModelBuilder};
+use demsweep::lattice::{self, Rect};
+use demsweep::material::{Arrangement, Plane};
+
+const R: f64 = 0.005;
+
+fn relaxed_patch(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_pa: f64) -> (Model, Vec<usize>, f64) {
+    let (w, h) = (80.0 * R, 80.0 * R);
+    let rect = Rect { x_min_m: 0.0, x_max_m: w, y_min_m: 0.0, y_max_m: h };
+    let lat = match arrangement {
+        Arrangement::SimpleCubic => lattice::simple_cubic(&rect, R).unwrap(),
+        _ => lattice::close_packed(&rect, R).unwrap(),
+    };
+    let t = 1.0;
+    let mut b = ModelBuilder::new(plane, t);
+    let m = b.add_material(common::elastic(e, nu, 2400.0));
+    b.add_body("patch", &lat, arrangement, m, &[], [0.0; 3]);
+    let n = lat.centres.len();
+    let left: Vec<usize> = (0..n).filter(|&k| lat.centres[k][0] < 2.5 * R).collect();
+    let right: Vec<usize> = (0..n).filter(|&k| lat.centres[k][0] > w - 2.5 * R).collect();
+    // Total edge force = σ × height × t (the height is only needed roughly: stress is measured).
+    let f = sigma_pa * h * t;
+    b.add_load(LoadGroup { name: "left".into(), force_n: [-f, 0.0], profile: Profile::Constant, count: 0 }, &left);
+    b.add_load(LoadGroup { name: "right".into(), force_n: [f, 0.0], profile: Profile::Constant, count: 0 }, &right);
+    let c = (e / 2400.0).sqrt();
+    b.alpha_per_s = std::f64::consts::PI * c / w;
+    let mut model = b.build().unwrap();
+    let steps = (60.0 * w / c / model.dt_s()) as u64;
+    model.run_steps(steps).unwrap();
+    let interior: Vec<usize> = (0..n)
+        .filter(|&k| {
+            let p = lat.centres[k];
+            (p[0] - 0.5 * w).abs() < 0.2 * w && (p[1] - 0.5 * h).abs() < 0.2 * h
+        })
+        .collect();
+    (model, interior, lat.area_per_element_m2 * t)
+}
+
+/// Least-squares displacement gradient over `set`: [[∂ux/∂x, ∂ux/∂y], [∂uy/∂x, ∂uy/∂y]].
+fn gradient(model: &Model, set: &[usize]) -> [[f64; 2]; 2] {
+    let n = set.len() as f64;
+    let mean = |f: &dyn Fn(usize) -> f64| set.iter().map(|&e| f(e)).sum::<f64>() / n;
+    let (xm, ym) = (mean(&|e| model.el.initial[e][0]), mean(&|e| model.el.initial[e][1]));
+    let (mut sxx, mut sxy, mut syy) = (0.0, 0.0, 0.0);
+    let mut rhs = [[0.0; 2]; 2];
+    for &e in set {
+        let (dx, dy) = (model.el.initial[e][0] - xm, model.el.initial[e][1] - ym);
+        let u = model.el.displacement_m(e);
+        sxx += dx * dx;
+        sxy += dx * dy;
+        syy += dy * dy;
+        for (c, uc) in u.iter().enumerate() {
+            rhs[c][0] += uc * dx;
+            rhs[c][1] += uc * dy;
+        }
+    }
+    let det = sxx * syy - sxy * sxy;
+    let solve = |r: [f64; 2]| [(r[0] * syy - r[1] * sxy) / det, (r[1] * sxx - r[0] * sxy) / det];
+    [solve(rhs[0]), solve(rhs[1])]
+}
+
+/// Per-element virial stress averaged over `set`, Pa: σ = (1/(A t)) Σ ½ f_i ⊗ (x_j − x_i).
+fn virial(model: &Model, set: &[usize], cell_volume: f64) -> [[f64; 2]; 2] {
+    let mut s = [[0.0; 2]; 2];
+    let inset = |e: usize| set.binary_search(&e).is_ok();
+    for (c, f) in model.contacts.list.iter().zip(&model.contacts.force) {
+        let (i, j) = (c.i as usize, c.j as usize);
+        let (pi, pj) = (model.el.pos[i], model.el.pos[j]);
+        let r = [pj[0] - pi[0], pj[1] - pi[1]];
+        // Force on i is f, on j is −f; branch from i is r, from j is −r: both ends add f ⊗ r.
+        let w = 0.5 * (inset(i) as u8 + inset(j) as u8) as f64;
+        let fv = [f.fx, f.fy];
+        for a in 0..2 {
+            for b in 0..2 {
+                s[a][b] += w * fv[a] * r[b];
+            }
+        }
+    }
+    let v = cell_volume * set.len() as f64;
+    [[s[0][0] / v, s[0][1] / v], [s[1][0] / v, s[1][1] / v]]
+}
+
+/// (E*, ν*) measured in the interior.
+fn measure(e: f64, nu: f64, plane: Plane, arrangement: Arrangement) -> (f64, f64) {
+    let (model, interior, cell) = relaxed_patch(e, nu, plane, arrangement, 1.0e6);
+    let g = gradient(&model, &interior);
+    let s = virial(&model, &interior, cell);
+    let (exx, eyy) = (g[0][0], g[1][1]);
+    let (sxx, syy) = (s[0][0], s[1][1]);
+    assert!(syy.abs() < 0.02 * sxx, "interior not in uniaxial stress: σyy/σxx = {}", syy / sxx);
+    let e_star = (sxx * sxx - syy * syy) / (sxx * exx - syy * eyy);
+    let nu_star = e_star * (syy * exx - sxx * eyy) / (sxx * sxx - syy * syy);
+    (e_star, nu_star)
+}
+
+fn check(e: f64, nu: f64, plane: Plane) {
+    let (e_star, nu_star) = measure(e, nu, plane, Arrangement::ClosePacked);
+    // Back to E, ν (inverting eq 1.4–1.5 for plane strain).
+    let (e_got, nu_got) = match plane {
+        Plane::Stress => (e_star, nu_star),
+        Plane::Strain => {
+            let nu = nu_star / (1.0 + nu_star);
+            (e_star * (1.0 - nu * nu), nu)
+        }
+    };
+    eprintln!("{plane:?} ν = {nu}: E {:.5} GPa ({:+.3} %), ν {:.5} ({:+.3} %)", e_got / 1e9, 100.0 * (e_got / e - 1.0), nu_got, 100.0 * (nu_got / nu - 1.0));
+    assert!((e_got / e - 1.0).abs() < 0.005, "E {e_got} vs {e}");
+    assert!((nu_got / nu - 1.0).abs() < 0.005, "ν {nu_got} vs {nu}");
+}
+
+#[test]
+fn close_packed_patch_recovers_e_and_nu_plane_strain() {
+    check(30e9, 0.2, Plane::Strain);
+    check(30e9, 0.25, Plane::Strain);
+}
+
+#[test]
+fn close_packed_patch_recovers_e_and_nu_plane_stress() {
+    check(30e9, 0.1, Plane::Stress);
+    check(30e9, 0.3, Plane::Stress);
+    check(30e9, 1.0 / 3.0, Plane::Stress);
+}
+
+#[test]
+fn simple_cubic_patch_has_e_star_and_no_poisson_effect() {
+    let (e_star, nu_star) = measure(30e9, 0.2, Plane::Stress, Arrangement::SimpleCubic);
+    assert!((e_star / 30e9 - 1.0).abs() < 0.005, "E* {e_star}");
+    assert!(nu_star.abs() < 1e-3, "ν* {nu_star}");
+}
