@@ -6,7 +6,8 @@
 //! is what a test or a run summary checks.
 
 use super::contacts::{Bond, Contact};
-use super::law::ContactClass;
+use super::forces;
+use super::law::{self, ContactClass, Dissipation};
 use super::state::Elements;
 
 /// Accumulated work and dissipation since the start of the run, J.
@@ -42,19 +43,25 @@ impl Ledger {
     }
 }
 
-/// Elastic energy stored in the contacts' springs, J.
-pub fn strain_energy_j(el: &Elements, list: &[Contact], classes: &[ContactClass]) -> f64 {
+/// Elastic energy stored in the contacts' springs at the current positions, J.
+///
+/// The tangential springs' history lags the positions by one step (this step's slip is added
+/// when the contacts are processed), so the energy is taken from the state the next contact
+/// processing would produce: each contact is evaluated on a copy with the law itself.
+pub fn strain_energy_j(el: &Elements, list: &[Contact], classes: &[ContactClass], dt_s: f64) -> f64 {
     let mut sum = 0.0;
+    let mut scratch = Dissipation::default();
     for c in list {
-        let (pi, pj) = (el.pos[c.i as usize], el.pos[c.j as usize]);
-        let d = ((pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2)).sqrt();
         let k = &classes[c.class as usize];
-        let stretch = match c.bond {
-            Bond::Intact => d - c.d0 - c.dp,
-            Bond::Frictional if d < c.d0 => d - c.d0,
+        let Some(g) = forces::kinematics(el, c, k) else { continue };
+        let mut probe = *c;
+        law::interact::<false>(&mut probe, k, &g, dt_s, &mut scratch);
+        let stretch = match probe.bond {
+            Bond::Intact => g.d_m - probe.d0 - probe.dp,
+            Bond::Frictional if g.d_m < probe.d0 => g.d_m - probe.d0,
             Bond::Frictional => continue,
         };
-        sum += 0.5 * k.kn_n_per_m * stretch * stretch + 0.5 * k.kt_n_per_m * c.ut * c.ut;
+        sum += 0.5 * k.kn_n_per_m * stretch * stretch + 0.5 * k.kt_n_per_m * probe.ut * probe.ut;
     }
     sum
 }

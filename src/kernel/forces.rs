@@ -37,22 +37,34 @@ pub fn process<const DAMP: bool>(
 
 #[inline(always)]
 fn one<const DAMP: bool>(el: &Elements, c: &mut Contact, classes: &[ContactClass], dt_s: f64, d: &mut Dissipation) -> ContactForce {
+    let k = &classes[c.class as usize];
+    match kinematics(el, c, k) {
+        Some(g) => law::interact::<DAMP>(c, k, &g, dt_s, d),
+        None => {
+            c.ut = 0.0;
+            ContactForce::default()
+        }
+    }
+}
+
+/// Geometry and relative velocity of a contact at the current state, or None for a
+/// frictional pair that does not touch.
+#[inline(always)]
+pub fn kinematics(el: &Elements, c: &Contact, k: &ContactClass) -> Option<Kinematics> {
     let (i, j) = (c.i as usize, c.j as usize);
     let (pi, pj) = (el.pos[i], el.pos[j]);
     let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
     let d2 = dx * dx + dy * dy;
     if c.bond == Bond::Frictional && d2 >= c.d0 * c.d0 {
-        c.ut = 0.0;
-        return ContactForce::default();
+        return None;
     }
-    let k = &classes[c.class as usize];
     let dist = d2.sqrt();
     let inv = 1.0 / dist;
     let (nx, ny) = (dx * inv, dy * inv);
     let (vi, vj) = (el.vel[i], el.vel[j]);
     let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
     let (li, lj) = (dist * k.lever_i, dist * k.lever_j);
-    let g = Kinematics {
+    Some(Kinematics {
         d_m: dist,
         nx,
         ny,
@@ -60,6 +72,5 @@ fn one<const DAMP: bool>(el: &Elements, c: &mut Contact, classes: &[ContactClass
         vt_mps: -dvx * ny + dvy * nx - li * vi[2] - lj * vj[2],
         li_m: li,
         lj_m: lj,
-    };
-    law::interact::<DAMP>(c, k, &g, dt_s, d)
+    })
 }

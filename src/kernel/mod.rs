@@ -243,7 +243,7 @@ impl Model {
 
     /// Elastic energy in the contacts, J.
     pub fn strain_energy_j(&self) -> f64 {
-        energy::strain_energy_j(&self.el, &self.contacts.list, &self.classes)
+        energy::strain_energy_j(&self.el, &self.contacts.list, &self.classes, self.motion.dt_s)
     }
 
     /// Energy balance residual, J (see `energy::Ledger::residual_j`).
