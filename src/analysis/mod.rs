@@ -1,0 +1,9 @@
+//! Analytic references that the kernel's validation tests compare against (SPEC §3, §5): mesh
+//! convergence by Richardson extrapolation, the cantilever's tip response, and the handbook
+//! critical stress of the cracked plate. Nothing here steps a DEM model; everything is a number
+//! the DEM must approach.
+
+
+pub mod richardson;
+
+pub use richardson::{Convergence, NotConvergent, richardson};
