@@ -5,5 +5,7 @@
 
 
 pub mod richardson;
+pub mod sent;
 
 pub use richardson::{Convergence, NotConvergent, richardson};
+pub use sent::sent_critical_stress_pa;
