@@ -3,9 +3,13 @@
 //! critical stress of the cracked plate. Nothing here steps a DEM model; everything is a number
 //! the DEM must approach.
 
-
+pub mod beam;
+mod beam_element;
 pub mod richardson;
 pub mod sent;
+pub mod timoshenko;
 
+pub use beam::{Beam, Theory, cowper_rectangle};
 pub use richardson::{Convergence, NotConvergent, richardson};
 pub use sent::sent_critical_stress_pa;
+pub use timoshenko::{CantileverModes, Mode, fundamental_rad_per_s, tip_amplitude_m};
