@@ -2,7 +2,7 @@
 //! damping C = αM: the modal reference of the cantilever validation case (seed 000 section 4,
 //! SPEC §3), in Euler–Bernoulli or Timoshenko theory (Han, Benaroya & Wei 1999).
 //!
-//! The continuous beam is replaced by a converged 1D finite-element model ([`super::beam_element`])
+//! The continuous beam is replaced by a converged 1D finite-element model (`beam_element.rs`)
 //! and its modes. C = αM is classical damping, so the modes decouple and mode k has damping ratio
 //! ξ_k = α/(2ω_k); the tip receptance is the modal sum Σ φ_k(tip)²/(ω_k² − ω² + 2iξ_kω_kω), with
 //! every mode of the model kept, so the sum is the model's exact receptance and the static limit is
