@@ -5,6 +5,7 @@
 //! Internal units are SI (m, kg, s, N, Pa); customary units appear only at the edges
 //! ([`units`]) and every public quantity names its unit.
 
+pub mod analysis;
 pub mod units;
 pub mod cli;
 pub mod error;
