@@ -338,6 +338,7 @@ impl ModelBuilder {
                 dt_s: dt,
                 detail: format!("{detail}; ω_max bound by {how}"),
             },
+            parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
         };
         debug_assert_eq!(model.el.len(), n);
         model.rebuild_neighbours();

@@ -41,7 +41,11 @@ fn one<const DAMP: bool>(el: &Elements, c: &mut Contact, classes: &[ContactClass
     match kinematics(el, c, k) {
         Some(g) => law::interact::<DAMP>(c, k, &g, dt_s, d),
         None => {
-            c.ut = 0.0;
+            // Separation releases what the shear spring still held.
+            if c.ut != 0.0 {
+                d.friction_j += 0.5 * k.kt_n_per_m * c.ut * c.ut;
+                c.ut = 0.0;
+            }
             ContactForce::default()
         }
     }

@@ -89,6 +89,8 @@ pub struct Model {
     pub rebuilds: u64,
     /// Time-step choice.
     pub step_info: StepInfo,
+    /// Contacts from which the stages run on rayon's pool (see [`PARALLEL_MIN_CONTACTS`]).
+    pub parallel_min_contacts: usize,
 }
 
 impl Model {
@@ -117,7 +119,7 @@ impl Model {
     }
 
     fn parallel(&self) -> bool {
-        self.contacts.len() >= PARALLEL_MIN_CONTACTS && rayon::current_num_threads() > 1
+        self.contacts.len() >= self.parallel_min_contacts && rayon::current_num_threads() > 1
     }
 
     fn process_contacts(&mut self) {
