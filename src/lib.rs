@@ -6,6 +6,8 @@
 //! ([`units`]) and every public quantity names its unit.
 
 pub mod analysis;
+pub mod bench;
+pub mod cases;
 pub mod units;
 pub mod cli;
 pub mod error;
@@ -14,3 +16,6 @@ pub use error::{Error, Result};
 pub mod kernel;
 pub mod lattice;
 pub mod material;
+pub mod run;
+pub mod scene;
+pub mod table;

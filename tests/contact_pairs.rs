@@ -81,12 +81,12 @@ fn coulomb_sliding_caps_the_shear_force() {
     let big = b.add_disk([0.0, 0.0], 1.0, 3.0, m, [0.0; 3]);
     let small = b.add_disk([0.0, 1.0 + R], R, area(), m, [0.0; 3]);
     b.add_motion(
-        demsweep::kernel::boundary::MotionGroup { name: "base".into(), velocity: [0.0; 3], profile: demsweep::kernel::boundary::Profile::Constant },
+        demsweep::kernel::boundary::MotionGroup::all("base", [0.0; 3], demsweep::kernel::boundary::Profile::Constant),
         &[big],
     );
     let (fn_load, ft_load) = (10.0, 15.0);
     b.add_load(
-        demsweep::kernel::boundary::LoadGroup { name: "push".into(), force_n: [ft_load, -fn_load], profile: demsweep::kernel::boundary::Profile::Constant, count: 0 },
+        demsweep::kernel::boundary::LoadGroup::force("push", [ft_load, -fn_load], demsweep::kernel::boundary::Profile::Constant),
         &[small],
     );
     b.alpha_per_s = 2000.0;

@@ -29,8 +29,8 @@ fn relaxed_patch(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_
     let right: Vec<usize> = (0..n).filter(|&k| lat.centres[k][0] > w - 2.5 * R).collect();
     // Total edge force = σ × height × t (the height is only needed roughly: stress is measured).
     let f = sigma_pa * h * t;
-    b.add_load(LoadGroup { name: "left".into(), force_n: [-f, 0.0], profile: Profile::Constant, count: 0 }, &left);
-    b.add_load(LoadGroup { name: "right".into(), force_n: [f, 0.0], profile: Profile::Constant, count: 0 }, &right);
+    b.add_load(LoadGroup::force("left", [-f, 0.0], Profile::Constant), &left);
+    b.add_load(LoadGroup::force("right", [f, 0.0], Profile::Constant), &right);
     let c = (e / 2400.0).sqrt();
     b.alpha_per_s = std::f64::consts::PI * c / w;
     let mut model = b.build().unwrap();

@@ -2,7 +2,10 @@
 
 use clap::{Parser, Subcommand};
 
+pub mod bench;
 pub mod empirical;
+pub mod run;
+pub mod scene;
 
 /// demsweep: deterministic 2D DEM of concrete impact, with the empirical formulas beside it.
 #[derive(Debug, Parser)]
@@ -15,6 +18,12 @@ pub struct Cli {
 /// Subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
+    /// Run one scene file and write its summary and time series.
+    Run(run::Args),
+    /// Print a validation case as a scene file (TOML).
+    Scene(scene::Args),
+    /// Measure the kernel's speed (ns per contact-step, element-steps per second).
+    Bench(bench::Args),
     /// Empirical concrete-impact formulas: penetration, scabbing and perforation thickness.
     Empirical(empirical::Args),
 }
@@ -22,6 +31,9 @@ pub enum Command {
 /// Run the parsed command.
 pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
     match cli.command {
+        Command::Run(args) => run::run(args),
+        Command::Bench(args) => bench::run(args),
+        Command::Scene(args) => scene::run(args),
         Command::Empirical(args) => empirical::run(args),
     }
 }

@@ -69,6 +69,8 @@ pub struct ModelBuilder {
     pub skin_ratio: f64,
     /// Blow-up speed limit, m/s (None: 10 × the largest wave or initial speed).
     pub speed_limit_mps: Option<f64>,
+    /// Mass-proportional damping acts relative to each body's rigid motion.
+    pub damp_relative_to_rigid: bool,
     materials: Vec<Material>,
     kinds: Vec<Kind>,
     el: Elements,
@@ -91,6 +93,7 @@ impl ModelBuilder {
             collision_steps: None,
             skin_ratio: 0.25,
             speed_limit_mps: None,
+            damp_relative_to_rigid: false,
             materials: Vec::new(),
             kinds: Vec::new(),
             el: Elements::default(),
@@ -180,9 +183,14 @@ impl ModelBuilder {
     /// Drive `elements` kinematically with `group`; returns the group index.
     pub fn add_motion(&mut self, group: MotionGroup, elements: &[usize]) -> usize {
         let g = self.motions.len();
+        let mask = group.mask();
         for &e in elements {
-            self.el.set_kinematic(e, g);
-            self.el.vel[e] = [0.0; 3];
+            self.el.set_kinematic(e, g, mask);
+            for d in 0..3 {
+                if mask & (1 << d) != 0 {
+                    self.el.vel[e][d] = 0.0;
+                }
+            }
         }
         self.motions.push(group);
         g
@@ -194,7 +202,7 @@ impl ModelBuilder {
         for &e in elements {
             self.el.load[e] = g as u16 + 1;
         }
-        group.count = elements.len();
+        group.members = elements.iter().map(|&e| e as u32).collect();
         self.loads.push(group);
         g
     }
@@ -251,7 +259,7 @@ impl ModelBuilder {
         let mut list: Vec<Contact> = self
             .bonds
             .iter()
-            .filter(|&&(i, j)| !(el.is_kinematic(i as usize) && el.is_kinematic(j as usize)))
+            .filter(|&&(i, j)| !(el.is_fully_prescribed(i as usize) && el.is_fully_prescribed(j as usize)))
             .map(|&(i, j)| {
                 let (pi, pj) = (el.pos[i as usize], el.pos[j as usize]);
                 let d0 = ((pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2)).sqrt();
@@ -264,7 +272,18 @@ impl ModelBuilder {
         let contacts = Contacts::from_list(list);
 
         let r_min = el.radius.iter().copied().fold(f64::INFINITY, f64::min);
-        let (omega, how) = frequency_bound(&el, &contacts.list, &classes, &self.kinds, &self.bodies, nk);
+        let (mut omega, mut how) = frequency_bound(&el, &contacts.list, &classes, &self.kinds, &self.bodies, nk);
+        // A servo grip adds the rank-one stiffness (k/n²) 1 1ᵀ on its members: by Weyl's
+        // inequality it raises ω_max² by at most k / (group mass); groups are disjoint.
+        let servo = self
+            .loads
+            .iter()
+            .filter_map(|g| g.servo.map(|s| s.stiffness_n_per_m / g.members.iter().map(|&e| el.mass[e as usize]).sum::<f64>()))
+            .fold(0.0, f64::max);
+        if servo > 0.0 {
+            omega = (omega * omega + servo).sqrt();
+            how.push_str(&format!(" + servo grips (Weyl) {:.4e} rad/s", servo.sqrt()));
+        }
         let xi = 0.5 * self.beta_s * omega;
         let dt_bound = stability::critical_step_s(omega, xi);
         let (dt, safety, mut detail) = match self.step {
@@ -326,6 +345,9 @@ impl ModelBuilder {
             motion_partial: Vec::new(),
             load_now: Vec::new(),
             motion_now: Vec::new(),
+            frame_now: Vec::new(),
+            damp_relative_to_rigid: self.damp_relative_to_rigid,
+            bodies: self.bodies.len(),
             ledger: Default::default(),
             time_s: 0.0,
             steps: 0,
@@ -383,7 +405,17 @@ fn frequency_bound(
             v
         };
         let has_bonds = list.iter().any(|c| b.elements.contains(&(c.i as usize)));
-        let regular = body_kinds.len() == 1 && kinds[body_kinds[0] as usize].arrangement != Arrangement::Irregular;
+        // Regular: one lattice of identical elements and identical springs. Kinds that differ
+        // only in strength (e.g. an unbreakable platen) are still one lattice for stiffness.
+        let k0 = body_kinds[0] as usize;
+        let same = |k: usize| {
+            let (a, z) = (&kinds[k], &kinds[k0]);
+            a.arrangement == z.arrangement && a.radius_m == z.radius_m && a.mass_kg == z.mass_kg
+        };
+        let springs = |a: usize, b: usize| (classes[a * nk + b].kn_n_per_m, classes[a * nk + b].kt_n_per_m);
+        let regular = kinds[k0].arrangement != Arrangement::Irregular
+            && body_kinds.iter().all(|&k| same(k as usize))
+            && body_kinds.iter().all(|&a| body_kinds.iter().all(|&c| springs(a as usize, c as usize) == springs(k0, k0)));
         let (omega, how) = if !has_bonds || regular {
             let mut w = 0.0f64;
             let mut how = String::new();

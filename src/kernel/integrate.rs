@@ -60,13 +60,54 @@ impl MotionReport {
     }
 }
 
-/// Per-step inputs: forces of load groups per sharing element, velocities of motion groups.
+/// Per-step inputs: forces of load groups per sharing element, velocities of motion groups,
+/// and (when mass damping spares rigid motion) each body's rigid-body velocity field.
 #[derive(Debug, Clone, Copy)]
 pub struct Drive<'a> {
     /// Per load group (index g − 1 for element load g), force per element [N, N].
     pub load_force_n: &'a [[f64; 2]],
     /// Per motion group, velocity [m/s, m/s, rad/s] over this step.
     pub motion_velocity: &'a [[f64; 3]],
+    /// Per body, [Vx m/s, Vy m/s, Ω rad/s, cx m, cy m]: velocity of the centre of mass, rigid
+    /// angular velocity and centre of mass. Empty: damping acts on absolute velocities.
+    pub rigid_frame: &'a [[f64; 5]],
+}
+
+/// Rigid-body velocity of each body from its free elements' momenta: V = P/M and
+/// Ω = L/J about the centre of mass, written to `out` ([Vx, Vy, Ω, cx, cy] per body).
+pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>) {
+    let mut acc = vec![[0.0f64; 6]; bodies]; // M, Mx, My, Px, Py, unused
+    for e in 0..el.len() {
+        if el.is_kinematic(e) {
+            continue;
+        }
+        let (m, b) = (el.mass[e], el.body[e] as usize);
+        let (p, v) = (el.pos[e], el.vel[e]);
+        let a = &mut acc[b];
+        a[0] += m;
+        a[1] += m * p[0];
+        a[2] += m * p[1];
+        a[3] += m * v[0];
+        a[4] += m * v[1];
+    }
+    out.clear();
+    out.extend(acc.iter().map(|a| if a[0] > 0.0 { [a[3] / a[0], a[4] / a[0], 0.0, a[1] / a[0], a[2] / a[0]] } else { [0.0; 5] }));
+    let mut lj = vec![[0.0f64; 2]; bodies];
+    for e in 0..el.len() {
+        if el.is_kinematic(e) {
+            continue;
+        }
+        let b = el.body[e] as usize;
+        let f = out[b];
+        let (p, v) = (el.pos[e], el.vel[e]);
+        let (rx, ry) = (p[0] - f[3], p[1] - f[4]);
+        let m = el.mass[e];
+        lj[b][0] += m * (rx * (v[1] - f[1]) - ry * (v[0] - f[0])) + el.inertia[e] * v[2];
+        lj[b][1] += m * (rx * rx + ry * ry) + el.inertia[e];
+    }
+    for (f, l) in out.iter_mut().zip(&lj) {
+        f[2] = if l[1] > 0.0 { l[0] / l[1] } else { 0.0 };
+    }
 }
 
 /// Generalised force on element `e` from its contacts, its load group and gravity, and the
@@ -102,8 +143,11 @@ pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity:
     (0..el.len()).map(|e| total_force(e, contacts, el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
-/// Advance every element by one step.
-pub fn advance(
+/// Advance every element by one step. `FRAME`: the mass-proportional damping acts on the
+/// velocity relative to the element's body's rigid motion (`drive.rigid_frame`), so that a
+/// free body can translate and rotate undamped (quasi-static loading by dynamic relaxation).
+#[allow(clippy::too_many_arguments)]
+pub fn advance<const FRAME: bool>(
     el: &mut Elements,
     contacts: &Contacts,
     rebuild_pos: &[[f64; 2]],
@@ -112,11 +156,11 @@ pub fn advance(
     partial: &mut [MotionReport],
     parallel: bool,
 ) {
-    let Elements { pos, vel, force, mass, inertia, inv_mass, inv_inertia, motion, load, radius, .. } = el;
-    let (mass, inertia, inv_mass, inv_inertia, motion, load, radius) =
-        (&*mass, &*inertia, &*inv_mass, &*inv_inertia, &*motion, &*load, &*radius);
+    let Elements { pos, vel, force, mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed, .. } = el;
+    let (mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed) =
+        (&*mass, &*inertia, &*inv_mass, &*inv_inertia, &*motion, &*load, &*radius, &*body, &*prescribed);
     let half = 0.5 * p.alpha_per_s * p.dt_s;
-    let (c1, c2) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half));
+    let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
     let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
@@ -128,16 +172,35 @@ pub fn advance(
             let v0 = *v;
             let v1 = if motion[e] != 0 {
                 let w = drive.motion_velocity[motion[e] as usize - 1];
-                // The actuator holds the element against everything else acting on it.
-                r.external_j -= (fx * w[0] + fy * w[1] + tz * w[2]) * p.dt_s;
-                w
+                let mask = prescribed[e];
+                // Prescribed dofs take the drive's velocity (the actuator holds the element
+                // against everything else acting on it); free dofs move undamped by their force
+                // (a roller slides freely).
+                let g = [fx * inv_mass[e], fy * inv_mass[e], tz * inv_inertia[e]];
+                let mut v1 = [0.0; 3];
+                for d in 0..3 {
+                    if mask & (1 << d) != 0 {
+                        v1[d] = w[d];
+                        r.external_j -= [fx, fy, tz][d] * w[d] * p.dt_s;
+                    } else {
+                        v1[d] = v0[d] + p.dt_s * g[d];
+                    }
+                }
+                v1
             } else {
+                // Reference velocity of the damping: zero, or the body's rigid motion here.
+                let vr = if FRAME {
+                    let g = drive.rigid_frame[body[e] as usize];
+                    [g[0] - g[2] * (x[1] - g[4]), g[1] + g[2] * (x[0] - g[3]), g[2]]
+                } else {
+                    [0.0; 3]
+                };
                 let v1 = [
-                    c1 * v0[0] + c2 * fx * inv_mass[e],
-                    c1 * v0[1] + c2 * fy * inv_mass[e],
-                    c1 * v0[2] + c2 * tz * inv_inertia[e],
+                    c1 * v0[0] + c2 * fx * inv_mass[e] + c3 * vr[0],
+                    c1 * v0[1] + c2 * fy * inv_mass[e] + c3 * vr[1],
+                    c1 * v0[2] + c2 * tz * inv_inertia[e] + c3 * vr[2],
                 ];
-                let mid = [0.5 * (v0[0] + v1[0]), 0.5 * (v0[1] + v1[1]), 0.5 * (v0[2] + v1[2])];
+                let mid = [0.5 * (v0[0] + v1[0]) - vr[0], 0.5 * (v0[1] + v1[1]) - vr[1], 0.5 * (v0[2] + v1[2]) - vr[2]];
                 r.mass_damping_j +=
                     p.alpha_per_s * (m * (mid[0] * mid[0] + mid[1] * mid[1]) + inertia[e] * mid[2] * mid[2]) * p.dt_s;
                 r.external_j += (ex * v1[0] + ey * v1[1]) * p.dt_s;

@@ -79,6 +79,10 @@ pub struct Model {
     motion_partial: Vec<MotionReport>,
     load_now: Vec<[f64; 2]>,
     motion_now: Vec<[f64; 3]>,
+    frame_now: Vec<[f64; 5]>,
+    /// Mass-proportional damping spares each body's rigid motion (see `integrate::advance`).
+    pub damp_relative_to_rigid: bool,
+    bodies: usize,
     /// Energy ledger.
     pub ledger: Ledger,
     /// Simulated time, s.
@@ -151,8 +155,13 @@ impl Model {
         let parallel = self.parallel();
         let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
         self.motion_partial.resize(n_chunks, MotionReport::default());
-        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now };
-        integrate::advance(&mut self.el, &self.contacts, &self.rebuild_pos, drive, self.motion, &mut self.motion_partial, parallel);
+        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
+        let (el, c, rp, p, part) = (&mut self.el, &self.contacts, &self.rebuild_pos, self.motion, &mut self.motion_partial);
+        if self.damp_relative_to_rigid {
+            integrate::advance::<true>(el, c, rp, drive, p, part, parallel);
+        } else {
+            integrate::advance::<false>(el, c, rp, drive, p, part, parallel);
+        }
         let mut total = MotionReport::default();
         for r in &self.motion_partial {
             total.merge(r);
@@ -181,15 +190,33 @@ impl Model {
     fn update_drive(&mut self) {
         let (t, half) = (self.time_s, self.time_s + 0.5 * self.motion.dt_s);
         self.load_now.clear();
+        let el = &self.el;
         self.load_now.extend(self.loads.iter().map(|g| {
-            let s = g.profile.at(t) / g.count.max(1) as f64;
-            [g.force_n[0] * s, g.force_n[1] * s]
+            let n = g.members.len().max(1) as f64;
+            match g.servo {
+                None => {
+                    let s = g.profile.at(t) / n;
+                    [g.force_n[0] * s, g.force_n[1] * s]
+                }
+                Some(servo) => {
+                    let [dx, dy] = servo.direction;
+                    let mean: f64 = g.members.iter().map(|&e| {
+                        let u = el.displacement_m(e as usize);
+                        u[0] * dx + u[1] * dy
+                    }).sum::<f64>() / n;
+                    let f = servo.stiffness_n_per_m * (servo.target_m(t) - mean) / n;
+                    [f * dx, f * dy]
+                }
+            }
         }));
         self.motion_now.clear();
         self.motion_now.extend(self.motions.iter().map(|g| {
             let s = g.profile.at(half);
             [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
         }));
+        if self.damp_relative_to_rigid {
+            integrate::rigid_frames(&self.el, self.bodies, &mut self.frame_now);
+        }
     }
 
     /// Put the free elements' velocities half a step back, v(−Δt/2) = v(0) − (Δt/2) a(0), so
@@ -202,14 +229,16 @@ impl Model {
         let mut partial = vec![Dissipation::default(); n_chunks];
         let Contacts { list, force, .. } = &mut probe;
         forces::process::<false>(&self.el, list, force, &self.classes, 0.0, &mut partial, false);
-        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now };
+        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
         let f = integrate::forces_now(&self.el, &probe, drive, self.motion.gravity_mps2);
         let h = 0.5 * self.motion.dt_s;
         for (e, fe) in f.iter().enumerate() {
-            let v = &mut self.el.vel[e];
-            v[0] -= h * fe[0] * self.el.inv_mass[e];
-            v[1] -= h * fe[1] * self.el.inv_mass[e];
-            v[2] -= h * fe[2] * self.el.inv_inertia[e];
+            let inv = [self.el.inv_mass[e], self.el.inv_mass[e], self.el.inv_inertia[e]];
+            for d in 0..3 {
+                if self.el.prescribed[e] & (1 << d) == 0 {
+                    self.el.vel[e][d] -= h * fe[d] * inv[d];
+                }
+            }
         }
     }
 
@@ -236,7 +265,7 @@ impl Model {
             let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
             Contact::frictional(i, j, class_of[a * kinds + b], el.radius[i as usize] + el.radius[j as usize])
         };
-        let admit = |i: u32, j: u32| !(el.is_kinematic(i as usize) && el.is_kinematic(j as usize));
+        let admit = |i: u32, j: u32| !(el.is_fully_prescribed(i as usize) && el.is_fully_prescribed(j as usize));
         self.contacts.merge_candidates(&self.pairs, touching, fresh, admit, n);
         self.rebuild_pos.clear();
         self.rebuild_pos.extend(self.el.pos.iter().map(|p| [p[0], p[1]]));
@@ -256,6 +285,12 @@ impl Model {
     /// Number of intact bonds.
     pub fn intact_bonds(&self) -> usize {
         self.contacts.list.iter().filter(|c| c.bond == Bond::Intact).count()
+    }
+
+    /// Total force a load group applied in the last step, [N, N].
+    pub fn applied_load_n(&self, group: usize) -> [f64; 2] {
+        let n = self.loads[group].members.len() as f64;
+        [self.load_now[group][0] * n, self.load_now[group][1] * n]
     }
 
     /// Sum of the forces on a set of elements in the last step, [N, N].

@@ -72,7 +72,7 @@ fn active<'a>(
 }
 
 fn inv_sqrt_mass(el: &Elements, e: usize) -> [f64; 3] {
-    [el.inv_mass[e].sqrt(), el.inv_mass[e].sqrt(), el.inv_inertia[e].sqrt()]
+    el.free_inv_sqrt_mass(e)
 }
 
 /// Gershgorin bound on ω_max of the assembled mesh, rad/s, with the rotational dofs scaled by
@@ -221,25 +221,18 @@ pub fn lattice_coefficient(arrangement: Arrangement, kt_over_kn: f64, inertia_ra
     best.sqrt()
 }
 
-/// Assemble the mass-normalised stiffness of the free dofs as a dense matrix (small meshes).
+/// Assemble the mass-normalised stiffness as a dense matrix (small meshes); prescribed dofs
+/// get zero rows and columns.
 pub fn dense_operator(el: &Elements, list: &[Contact], classes: &[ContactClass]) -> DMatrix<f64> {
-    let free: Vec<usize> = (0..el.len()).filter(|&e| !el.is_kinematic(e)).collect();
-    let mut index = vec![usize::MAX; el.len()];
-    for (k, &e) in free.iter().enumerate() {
-        index[e] = k;
-    }
-    let mut a = DMatrix::zeros(3 * free.len(), 3 * free.len());
+    let mut a = DMatrix::zeros(3 * el.len(), 3 * el.len());
     for (i, j, k) in active(el, list, classes) {
         let ends = [(i, 0), (j, 3)];
         for &(p, op) in &ends {
             for &(q, oq) in &ends {
-                if index[p] == usize::MAX || index[q] == usize::MAX {
-                    continue;
-                }
                 let (sp, sq) = (inv_sqrt_mass(el, p), inv_sqrt_mass(el, q));
                 for u in 0..3 {
                     for v in 0..3 {
-                        a[(3 * index[p] + u, 3 * index[q] + v)] += k[op + u][oq + v] * sp[u] * sq[v];
+                        a[(3 * p + u, 3 * q + v)] += k[op + u][oq + v] * sp[u] * sq[v];
                     }
                 }
             }

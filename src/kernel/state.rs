@@ -20,10 +20,12 @@ pub struct Elements {
     pub mass: Vec<f64>,
     /// Rotational inertia about the centre, kg·m².
     pub inertia: Vec<f64>,
-    /// 1/mass, 1/kg; 0 for kinematic (fixed or velocity-driven) elements.
+    /// 1/mass, 1/kg.
     pub inv_mass: Vec<f64>,
-    /// 1/inertia, 1/(kg·m²); 0 for kinematic elements.
+    /// 1/inertia, 1/(kg·m²).
     pub inv_inertia: Vec<f64>,
+    /// Prescribed degrees of freedom: bit 0 x, bit 1 y, bit 2 rotation (0: free element).
+    pub prescribed: Vec<u8>,
     /// Kind (material × radius) index: selects the contact class of new contacts.
     pub kind: Vec<u16>,
     /// Body index (bonds never cross bodies).
@@ -60,20 +62,34 @@ impl Elements {
         self.kind.push(kind);
         self.body.push(body);
         self.motion.push(0);
+        self.prescribed.push(0);
         self.load.push(0);
         self.initial.push([x_m, y_m]);
     }
 
-    /// Make element `e` kinematic, driven by motion group `group` (0-based).
-    pub fn set_kinematic(&mut self, e: usize, group: usize) {
+    /// Drive element `e` by motion group `group` (0-based) in the dofs of `mask` (bit 0 x,
+    /// bit 1 y, bit 2 rotation); the other dofs stay free.
+    pub fn set_kinematic(&mut self, e: usize, group: usize, mask: u8) {
         self.motion[e] = group as u16 + 1;
-        self.inv_mass[e] = 0.0;
-        self.inv_inertia[e] = 0.0;
+        self.prescribed[e] = mask;
     }
 
-    /// True when element `e` moves by prescription, not by its forces.
+    /// True when some dof of element `e` moves by prescription.
     pub fn is_kinematic(&self, e: usize) -> bool {
         self.motion[e] != 0
+    }
+
+    /// True when every dof of element `e` is prescribed.
+    pub fn is_fully_prescribed(&self, e: usize) -> bool {
+        self.prescribed[e] == 0b111
+    }
+
+    /// [1/√m, 1/√m, 1/√I] with 0 in the prescribed dofs: the scaling of the free dofs'
+    /// mass-normalised stiffness.
+    pub fn free_inv_sqrt_mass(&self, e: usize) -> [f64; 3] {
+        let p = self.prescribed[e];
+        let f = |bit: u8, inv: f64| if p & bit != 0 { 0.0 } else { inv.sqrt() };
+        [f(1, self.inv_mass[e]), f(2, self.inv_mass[e]), f(4, self.inv_inertia[e])]
     }
 
     /// Kinetic energy, J (velocities at the half step).
