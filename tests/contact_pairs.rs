@@ -182,3 +182,21 @@ fn energy_law_dissipates_gf_per_unit_crack_area() {
     let broke_at = rec.last().unwrap().0;
     assert!((broke_at / delta_max - 1.0).abs() < 2e-6);
 }
+
+#[test]
+fn fragments_far_from_the_origin_still_collide() {
+    // Two disks 1e6 m away (a fragment that flew off) meet head-on: the broad phase has no
+    // grid bounds, so the contact is found and the rebound is as near the origin.
+    let far = 1.0e6;
+    let mut b = ModelBuilder::new(Plane::Stress, 1.0);
+    let m = b.add_material(common::elastic(30e9, 0.2, 2400.0));
+    b.add_disk([far, -far], R, area(), m, [1.0, 0.0, 0.0]);
+    b.add_disk([far + 2.0 * R + 1e-5, -far], R, area(), m, [-1.0, 0.0, 0.0]);
+    b.collision_steps = Some(20.0);
+    let mut model = b.build().unwrap();
+    for _ in 0..2000 {
+        model.step().unwrap();
+    }
+    let e = (model.el.vel[1][0] - model.el.vel[0][0]) / 2.0;
+    assert!((e - 1.0).abs() < 1e-3, "restitution {e}");
+}

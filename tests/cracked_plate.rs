@@ -1,26 +1,58 @@
-//! Cracked plate, Mode I (SPEC §3; seed 000 §4–5).
+//! Cracked plate, Mode I (SPEC §3; seed 000 §4–5). The coarse meshes run here and must
+//! reproduce their rows of the golden tables (results/validation/, written by
+//! `demsweep validate cracked-plate`); the fine meshes run in scripts/validation.sh.
 
-use demsweep::analysis::richardson;
-use demsweep::cases::cracked_plate::{self as plate, Study};
+mod common;
+
+use common::golden;
+use demsweep::cases::cracked_plate::{self as plate, Study, TENSILE_PA};
+
+fn live(study: Study, level: u32, cracked: bool) -> f64 {
+    plate::run(study, level, cracked).unwrap().0.stress_pa
+}
 
 #[test]
-#[ignore]
-fn explore() {
-    let mut v = vec![];
-    for level in 0..3 {
-        let (p, _) = plate::run(Study::EnergyClosePacked, level, true).unwrap();
-        eprintln!("energy cp level {level}: {p:?}");
-        v.push(p.stress_pa);
-        let (p, _) = plate::run(Study::EnergyClosePacked, level, false).unwrap();
-        eprintln!("  uncracked: {p:?}");
+fn coarse_meshes_reproduce_their_golden_rows() {
+    for (name, study, cracked, levels) in [
+        ("cracked_plate_energy", Study::EnergyClosePacked, true, &[0u32, 1][..]),
+        ("cracked_plate_uncracked", Study::EnergyClosePacked, false, &[0, 1][..]),
+        ("cracked_plate_toughness", Study::ToughnessSimpleCubic, true, &[0, 1][..]),
+    ] {
+        let g = golden::levels(&golden::table(name), "peak_stress_pa");
+        for &l in levels {
+            golden::assert_matches(live(study, l, cracked), g[l as usize].1, &format!("{name} level {l}"));
+        }
     }
-    eprintln!("{:?}", richardson([v[0], v[1], v[2]], 2.0));
-    let mut v = vec![];
-    for level in 0..3 {
-        let (p, _) = plate::run(Study::ToughnessSimpleCubic, level, true).unwrap();
-        eprintln!("toughness sc level {level}: {p:?}");
-        v.push(p.stress_pa);
+}
+
+#[test]
+fn uncracked_plate_carries_the_tensile_strength_at_every_mesh() {
+    let t = golden::table("cracked_plate_uncracked");
+    for (level, s) in golden::levels(&t, "peak_stress_pa") {
+        assert!((s / TENSILE_PA - 1.0).abs() < 0.02, "level {level}: {s} Pa vs σ_ult {TENSILE_PA}");
     }
-    eprintln!("{:?}", richardson([v[0], v[1], v[2]], 2.0));
-    eprintln!("handbook {:.5} MPa", plate::handbook_pa() / 1e6);
+    golden::richardson_row(&t, "peak_stress_pa", plate::REFINEMENT);
+}
+
+#[test]
+fn energy_criterion_converges_below_the_net_section_limit() {
+    let t = golden::table("cracked_plate_energy");
+    let v = golden::levels(&t, "peak_stress_pa");
+    // Monotone convergence from above, at an order between 1 and 2 (the seed: 1.8).
+    assert!(v[0].1 > v[1].1 && v[1].1 > v[2].1, "{v:?}");
+    let (ext, order) = golden::richardson_row(&t, "peak_stress_pa", plate::REFINEMENT);
+    assert!((1.0..=2.5).contains(&order), "order {order}");
+    // With the edges kept parallel the ligament cannot carry more than σ_ult over its net
+    // width (plastic limit): σ_ult (1 − a/c) on the nominal width.
+    let limit = TENSILE_PA * (1.0 - plate::CRACK_M / plate::WIDTH_M);
+    assert!(ext < limit, "extrapolate {ext} above the net-section limit {limit}");
+}
+
+#[test]
+#[ignore = "open (issue 2): the energy criterion extrapolates to 2.97 MPa (+13.7 %) with the seed's \
+            displacement-driven edges and to 2.36 MPa (−9.7 %) under uniform traction; see the issue note"]
+fn energy_criterion_extrapolates_within_2_percent_of_the_handbook_value() {
+    let (ext, _) = golden::richardson_row(&golden::table("cracked_plate_energy"), "peak_stress_pa", plate::REFINEMENT);
+    let handbook = plate::handbook_pa();
+    assert!((ext / handbook - 1.0).abs() < 0.02, "extrapolate {ext} vs handbook {handbook}");
 }

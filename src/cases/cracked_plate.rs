@@ -8,21 +8,34 @@
 //!   (≈ 1 200 / 4 700 / 18 900 elements);
 //! * toughness criterion (eq 3.10) on simple cubic meshes 16², 32², 64² with Kn = Kt = E t.
 //!
-//! Loading: the top and bottom rows are pulled apart by whiffle-tree grips (uniform traction,
-//! displacement control of the mean: [`crate::kernel::boundary::Servo`]), which is the
-//! far-field uniform tension the handbook value (eq 4.3) assumes, and lets the load fall after
-//! the peak. The far-field stress is the grip force over c·t; its peak is the stress at unstable
-//! crack growth. Mass-proportional damping, critical at the plate's first extensional mode,
-//! keeps the loading quasi-static.
+//! Loading (the seed: "the upper boundary moves in the upward direction and the lower boundary
+//! moves an equal amount in the downward direction"): by default [`Grips::Rollers`], the top
+//! and bottom rows move apart at a constant speed, free to slide sideways. The far-field
+//! stress is the grips' reaction over the lattice's net width ([`net_width_m`]); its peak is
+//! the stress at unstable crack growth. Two other grips are available for comparison:
+//! [`Grips::Clamped`] and [`Grips::UniformTraction`] (whiffle-tree servo grips,
+//! [`crate::kernel::boundary::Servo`]: uniform traction with the plate free to rotate, which
+//! is what the handbook value, eq 4.3, assumes for a long plate).
+//!
+//! The boundary condition matters: with these constants the characteristic length
+//! E G_f/σ_ult² ≈ 0.085 m is a third of the plate, so the plate is far from the small-scale
+//! yielding of linear fracture mechanics, and the peak sits near the plastic limit of the net
+//! section: σ_ult (1 − a/c) = 3.01 MPa when the grips keep the edges parallel, and 2.61 MPa
+//! under uniform traction (eccentric tension of the ligament, n² + 4 e n/h = 1). The DEM
+//! reaches about 99 % and 90 % of these. See the issue note and `results/validation/`.
+//!
+//! Quasi-static loading: the grips open to 3× the uncracked plate's failure strain over
+//! [`LOADING_TIME_S`]; mass-proportional damping of [`DAMPING_RATIO`] at the plate's first
+//! extensional mode, acting relative to the plate's rigid motion so that a free plate is not
+//! held by it. The peak drifts like 1/T (−0.4 % from T to 2T at this setting).
 //!
 //! The rows within [`PLATEN_ROWS`] of each loaded edge are a "platen": the same material and
 //! law, but [`PLATEN_TOUGHNESS_FACTOR`] times the toughness, so its bonds yield exactly like
-//! the plate's and flow on their plateau instead of breaking. Without it the loaded row's corner
-//! elements, which hang on a single inclined bond, yield at about half the far-field strength
-//! and tear off, and the grip then pulls a loose element (a glued platen prevents that in a
-//! laboratory). An elastic platen would not do: the plate's shear springs reach their plateau
-//! (eq 5.6) before its normal springs, and the stiffness mismatch at an elastic platen's face
-//! concentrates stress there.
+//! the plate's and flow on their plateau instead of breaking. Without it a uniform-traction
+//! grip's corner elements, which hang on a single inclined bond, yield at about half the
+//! far-field strength and tear off (a glued platen prevents that in a laboratory). An elastic
+//! platen would not do: the plate's shear springs reach their plateau (eq 5.6) before its
+//! normal springs, and the stiffness mismatch at an elastic platen's face concentrates stress.
 
 use crate::error::Result;
 use crate::kernel::boundary::{Profile, Servo};
@@ -55,13 +68,13 @@ pub const DENSITY_KG_PER_M3: f64 = 2400.0;
 /// Refinement ratio between levels.
 pub const REFINEMENT: f64 = 2.0;
 /// Critical-damping ratio (mass-proportional) at the plate's first extensional mode.
-pub const DAMPING_RATIO: f64 = 0.1;
+pub const DAMPING_RATIO: f64 = 0.02;
 /// Rows at each loaded edge whose bonds do not fail.
 pub const PLATEN_ROWS: f64 = 3.0;
 /// Toughness of the platen rows relative to the plate (G_f × its square: they never break).
 pub const PLATEN_TOUGHNESS_FACTOR: f64 = 100.0;
 /// Time over which the grips open to 3× the uncracked plate's failure strain, s.
-pub const LOADING_TIME_S: f64 = 8e-3;
+pub const LOADING_TIME_S: f64 = 0.032;
 
 /// Which of the seed's two studies.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,7 +141,7 @@ pub struct Setup {
 
 impl Default for Setup {
     fn default() -> Self {
-        Setup { grips: Grips::UniformTraction, height_m: HEIGHT_M, loading_time_s: LOADING_TIME_S, damping_ratio: DAMPING_RATIO }
+        Setup { grips: Grips::Rollers, height_m: HEIGHT_M, loading_time_s: LOADING_TIME_S, damping_ratio: DAMPING_RATIO }
     }
 }
 

@@ -7,3 +7,4 @@
 pub mod cantilever;
 pub mod cracked_plate;
 pub mod fit;
+pub mod study;

@@ -6,6 +6,7 @@ pub mod bench;
 pub mod empirical;
 pub mod run;
 pub mod scene;
+pub mod validate;
 
 /// demsweep: deterministic 2D DEM of concrete impact, with the empirical formulas beside it.
 #[derive(Debug, Parser)]
@@ -20,6 +21,8 @@ pub struct Cli {
 pub enum Command {
     /// Run one scene file and write its summary and time series.
     Run(run::Args),
+    /// Run a validation case at several refinements and write its convergence table.
+    Validate(validate::Args),
     /// Print a validation case as a scene file (TOML).
     Scene(scene::Args),
     /// Measure the kernel's speed (ns per contact-step, element-steps per second).
@@ -34,6 +37,7 @@ pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
         Command::Run(args) => run::run(args),
         Command::Bench(args) => bench::run(args),
         Command::Scene(args) => scene::run(args),
+        Command::Validate(args) => validate::run(args),
         Command::Empirical(args) => empirical::run(args),
     }
 }

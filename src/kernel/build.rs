@@ -346,6 +346,7 @@ impl ModelBuilder {
             load_now: Vec::new(),
             motion_now: Vec::new(),
             frame_now: Vec::new(),
+            frame_scratch: Vec::new(),
             damp_relative_to_rigid: self.damp_relative_to_rigid,
             bodies: self.bodies.len(),
             ledger: Default::default(),

@@ -75,8 +75,11 @@ pub struct Drive<'a> {
 
 /// Rigid-body velocity of each body from its free elements' momenta: V = P/M and
 /// Ω = L/J about the centre of mass, written to `out` ([Vx, Vy, Ω, cx, cy] per body).
-pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>) {
-    let mut acc = vec![[0.0f64; 6]; bodies]; // M, Mx, My, Px, Py, unused
+/// `acc` is scratch space (reused between calls: no allocation in the step loop).
+pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: &mut Vec<[f64; 5]>) {
+    // Per body: M, Mx, My, Px, Py; then L, J in the first two slots.
+    acc.clear();
+    acc.resize(bodies, [0.0; 5]);
     for e in 0..el.len() {
         if el.is_kinematic(e) {
             continue;
@@ -92,7 +95,7 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>) {
     }
     out.clear();
     out.extend(acc.iter().map(|a| if a[0] > 0.0 { [a[3] / a[0], a[4] / a[0], 0.0, a[1] / a[0], a[2] / a[0]] } else { [0.0; 5] }));
-    let mut lj = vec![[0.0f64; 2]; bodies];
+    acc.iter_mut().for_each(|a| *a = [0.0; 5]);
     for e in 0..el.len() {
         if el.is_kinematic(e) {
             continue;
@@ -102,10 +105,10 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>) {
         let (p, v) = (el.pos[e], el.vel[e]);
         let (rx, ry) = (p[0] - f[3], p[1] - f[4]);
         let m = el.mass[e];
-        lj[b][0] += m * (rx * (v[1] - f[1]) - ry * (v[0] - f[0])) + el.inertia[e] * v[2];
-        lj[b][1] += m * (rx * rx + ry * ry) + el.inertia[e];
+        acc[b][0] += m * (rx * (v[1] - f[1]) - ry * (v[0] - f[0])) + el.inertia[e] * v[2];
+        acc[b][1] += m * (rx * rx + ry * ry) + el.inertia[e];
     }
-    for (f, l) in out.iter_mut().zip(&lj) {
+    for (f, l) in out.iter_mut().zip(acc.iter()) {
         f[2] = if l[1] > 0.0 { l[0] / l[1] } else { 0.0 };
     }
 }

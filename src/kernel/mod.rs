@@ -80,6 +80,7 @@ pub struct Model {
     load_now: Vec<[f64; 2]>,
     motion_now: Vec<[f64; 3]>,
     frame_now: Vec<[f64; 5]>,
+    frame_scratch: Vec<[f64; 5]>,
     /// Mass-proportional damping spares each body's rigid motion (see `integrate::advance`).
     pub damp_relative_to_rigid: bool,
     bodies: usize,
@@ -131,11 +132,11 @@ impl Model {
         let n_chunks = self.contacts.len().div_ceil(forces::CHUNK);
         self.diss_partial.resize(n_chunks, Dissipation::default());
         let Contacts { list, force, .. } = &mut self.contacts;
-        let args = (&self.el, &mut list[..], &mut force[..], &self.classes[..], self.motion.dt_s);
+        let (el, classes, dt, diss) = (&self.el, &self.classes[..], self.motion.dt_s, &mut self.diss_partial[..]);
         if self.damped {
-            forces::process::<true>(args.0, args.1, args.2, args.3, args.4, &mut self.diss_partial, parallel);
+            forces::process::<true>(el, list, force, classes, dt, diss, parallel);
         } else {
-            forces::process::<false>(args.0, args.1, args.2, args.3, args.4, &mut self.diss_partial, parallel);
+            forces::process::<false>(el, list, force, classes, dt, diss, parallel);
         }
         let mut total = Dissipation::default();
         for d in &self.diss_partial {
@@ -215,7 +216,7 @@ impl Model {
             [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
         }));
         if self.damp_relative_to_rigid {
-            integrate::rigid_frames(&self.el, self.bodies, &mut self.frame_now);
+            integrate::rigid_frames(&self.el, self.bodies, &mut self.frame_now, &mut self.frame_scratch);
         }
     }
 

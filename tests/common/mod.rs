@@ -1,6 +1,8 @@
 //! Shared test helpers: materials and small scenes.
 #![allow(dead_code)]
 
+pub mod golden;
+
 use demsweep::material::{FailureCriterion, Material, PoissonPolicy};
 
 /// The cracked-plate concrete of seed §4–5: E = 29.7 GPa, ν = 0.3, σ_ult = 3.44 MPa,
