@@ -347,6 +347,7 @@ impl ModelBuilder {
             motion_now: Vec::new(),
             frame_now: Vec::new(),
             frame_scratch: Vec::new(),
+            contact_sums: Vec::new(),
             damp_relative_to_rigid: self.damp_relative_to_rigid,
             bodies: self.bodies.len(),
             ledger: Default::default(),

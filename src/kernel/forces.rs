@@ -2,6 +2,11 @@
 //! the previous half-step velocities. Each contact writes only its own entry, so the stage runs
 //! in parallel chunks with results independent of the thread count; dissipation is summed per
 //! fixed-size chunk and the chunk sums are added in chunk order (deterministic).
+//!
+//! On one thread the stage also adds each force to its two elements as it goes (a scatter),
+//! which spares the motion stage its gather. The scatter visits an element's contacts in
+//! increasing contact order, the same order as the gather's adjacency, from the same zero: the
+//! sums are bitwise the same either way.
 
 use rayon::prelude::*;
 
@@ -12,7 +17,10 @@ use super::state::Elements;
 /// Contacts per chunk: fixed, so partial sums do not depend on the number of threads.
 pub const CHUNK: usize = 2048;
 
-/// Compute all contact forces. `partial` must hold one entry per chunk.
+/// Compute all contact forces. `partial` must hold one entry per chunk. With `sums` (one
+/// thread), each force is also added to its elements' sums [Fx N, Fy N, T N·m], which must
+/// come in zeroed.
+#[allow(clippy::too_many_arguments)]
 pub fn process<const DAMP: bool>(
     el: &Elements,
     list: &mut [Contact],
@@ -20,18 +28,47 @@ pub fn process<const DAMP: bool>(
     classes: &[ContactClass],
     dt_s: f64,
     partial: &mut [Dissipation],
-    parallel: bool,
+    sums: Option<&mut [[f64; 3]]>,
 ) {
-    let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation)| {
-        *d = Dissipation::default();
-        for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
-            *f = one::<DAMP>(el, c, classes, dt_s, d);
+    match sums {
+        None => {
+            let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation)| {
+                *d = Dissipation::default();
+                for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
+                    *f = one::<DAMP>(el, c, classes, dt_s, d);
+                }
+            };
+            list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).for_each(run);
         }
-    };
-    if parallel {
-        list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).for_each(run);
-    } else {
-        list.chunks_mut(CHUNK).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).for_each(run);
+        Some(sums) => {
+            // Contacts are sorted by i: keep i's running sum in registers while i repeats.
+            let mut run_i = u32::MAX;
+            let mut acc = [0.0f64; 3];
+            for ((cs, fs), d) in list.chunks_mut(CHUNK).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()) {
+                *d = Dissipation::default();
+                for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
+                    let cf = one::<DAMP>(el, c, classes, dt_s, d);
+                    *f = cf;
+                    if c.i != run_i {
+                        if run_i != u32::MAX {
+                            sums[run_i as usize] = acc;
+                        }
+                        run_i = c.i;
+                        acc = sums[run_i as usize];
+                    }
+                    acc[0] += cf.fx;
+                    acc[1] += cf.fy;
+                    acc[2] += cf.ti;
+                    let s = &mut sums[c.j as usize];
+                    s[0] -= cf.fx;
+                    s[1] -= cf.fy;
+                    s[2] += cf.tj;
+                }
+            }
+            if run_i != u32::MAX {
+                sums[run_i as usize] = acc;
+            }
+        }
     }
 }
 

@@ -117,19 +117,21 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: 
 /// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts are summed in
 /// the adjacency's fixed order.
 #[inline(always)]
-fn total_force(e: usize, contacts: &Contacts, mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
-    let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
-    let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
-    for &a in &contacts.adj[s..t] {
-        let cf = &contacts.force[(a >> 1) as usize];
-        if a & 1 == 0 {
-            fx += cf.fx;
-            fy += cf.fy;
-            tz += cf.ti;
-        } else {
-            fx -= cf.fx;
-            fy -= cf.fy;
-            tz += cf.tj;
+fn total_force(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
+    let [mut fx, mut fy, mut tz] = if sums.is_empty() { [0.0; 3] } else { sums[e] };
+    if sums.is_empty() {
+        let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
+        for &a in &contacts.adj[s..t] {
+            let cf = &contacts.force[(a >> 1) as usize];
+            if a & 1 == 0 {
+                fx += cf.fx;
+                fy += cf.fy;
+                tz += cf.ti;
+            } else {
+                fx -= cf.fx;
+                fy -= cf.fy;
+                tz += cf.tj;
+            }
         }
     }
     let (mut ex, mut ey) = (mass_kg * gravity[0], mass_kg * gravity[1]);
@@ -143,16 +145,19 @@ fn total_force(e: usize, contacts: &Contacts, mass_kg: f64, load: u16, drive: Dr
 
 /// Forces of every element for the current contact forces (no motion), as `advance` would see them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    (0..el.len()).map(|e| total_force(e, contacts, el.mass[e], el.load[e], drive, gravity).0).collect()
+    (0..el.len()).map(|e| total_force(e, contacts, &[], el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
 /// Advance every element by one step. `FRAME`: the mass-proportional damping acts on the
 /// velocity relative to the element's body's rigid motion (`drive.rigid_frame`), so that a
 /// free body can translate and rotate undamped (quasi-static loading by dynamic relaxation).
+/// `sums`: the contact forces already summed per element by stage 1 (one thread), or empty to
+/// gather them here over the adjacency.
 #[allow(clippy::too_many_arguments)]
 pub fn advance<const FRAME: bool>(
     el: &mut Elements,
     contacts: &Contacts,
+    sums: &[[f64; 3]],
     rebuild_pos: &[[f64; 2]],
     drive: Drive<'_>,
     p: MotionParams,
@@ -170,7 +175,7 @@ pub fn advance<const FRAME: bool>(
         for (o, ((x, v), f)) in ps.iter_mut().zip(vs.iter_mut()).zip(fs.iter_mut()).enumerate() {
             let e = k * CHUNK + o;
             let m = mass[e];
-            let ([fx, fy, tz], [ex, ey]) = total_force(e, contacts, m, load[e], drive, p.gravity_mps2);
+            let ([fx, fy, tz], [ex, ey]) = total_force(e, contacts, sums, m, load[e], drive, p.gravity_mps2);
             *f = [fx, fy, tz];
             let v0 = *v;
             let v1 = if motion[e] != 0 {

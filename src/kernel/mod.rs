@@ -81,6 +81,8 @@ pub struct Model {
     motion_now: Vec<[f64; 3]>,
     frame_now: Vec<[f64; 5]>,
     frame_scratch: Vec<[f64; 5]>,
+    /// Per-element contact force sums of stage 1 when it runs on one thread (else empty).
+    contact_sums: Vec<[f64; 3]>,
     /// Mass-proportional damping spares each body's rigid motion (see `integrate::advance`).
     pub damp_relative_to_rigid: bool,
     bodies: usize,
@@ -131,12 +133,17 @@ impl Model {
         let parallel = self.parallel();
         let n_chunks = self.contacts.len().div_ceil(forces::CHUNK);
         self.diss_partial.resize(n_chunks, Dissipation::default());
+        self.contact_sums.clear();
+        if !parallel {
+            self.contact_sums.resize(self.el.len(), [0.0; 3]);
+        }
+        let sums = if parallel { None } else { Some(&mut self.contact_sums[..]) };
         let Contacts { list, force, .. } = &mut self.contacts;
         let (el, classes, dt, diss) = (&self.el, &self.classes[..], self.motion.dt_s, &mut self.diss_partial[..]);
         if self.damped {
-            forces::process::<true>(el, list, force, classes, dt, diss, parallel);
+            forces::process::<true>(el, list, force, classes, dt, diss, sums);
         } else {
-            forces::process::<false>(el, list, force, classes, dt, diss, parallel);
+            forces::process::<false>(el, list, force, classes, dt, diss, sums);
         }
         let mut total = Dissipation::default();
         for d in &self.diss_partial {
@@ -158,10 +165,11 @@ impl Model {
         self.motion_partial.resize(n_chunks, MotionReport::default());
         let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
         let (el, c, rp, p, part) = (&mut self.el, &self.contacts, &self.rebuild_pos, self.motion, &mut self.motion_partial);
+        let sums = &self.contact_sums[..];
         if self.damp_relative_to_rigid {
-            integrate::advance::<true>(el, c, rp, drive, p, part, parallel);
+            integrate::advance::<true>(el, c, sums, rp, drive, p, part, parallel);
         } else {
-            integrate::advance::<false>(el, c, rp, drive, p, part, parallel);
+            integrate::advance::<false>(el, c, sums, rp, drive, p, part, parallel);
         }
         let mut total = MotionReport::default();
         for r in &self.motion_partial {
@@ -229,7 +237,7 @@ impl Model {
         let n_chunks = probe.len().div_ceil(forces::CHUNK);
         let mut partial = vec![Dissipation::default(); n_chunks];
         let Contacts { list, force, .. } = &mut probe;
-        forces::process::<false>(&self.el, list, force, &self.classes, 0.0, &mut partial, false);
+        forces::process::<false>(&self.el, list, force, &self.classes, 0.0, &mut partial, None);
         let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
         let f = integrate::forces_now(&self.el, &probe, drive, self.motion.gravity_mps2);
         let h = 0.5 * self.motion.dt_s;
