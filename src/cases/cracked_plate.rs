@@ -139,6 +139,13 @@ pub struct Setup {
     pub damping_ratio: f64,
 }
 
+impl Setup {
+    /// The default set-up with other grips.
+    pub fn with_grips(grips: Grips) -> Setup {
+        Setup { grips, ..Setup::default() }
+    }
+}
+
 impl Default for Setup {
     fn default() -> Self {
         Setup { grips: Grips::Rollers, height_m: HEIGHT_M, loading_time_s: LOADING_TIME_S, damping_ratio: DAMPING_RATIO }
@@ -302,8 +309,8 @@ pub struct Peak {
 }
 
 /// Run one mesh.
-pub fn run(study: Study, level: u32, cracked: bool) -> Result<(Peak, RunResult)> {
-    let built = scene(study, level, cracked, &Setup::default()).build()?;
+pub fn run(study: Study, level: u32, cracked: bool, setup: &Setup) -> Result<(Peak, RunResult)> {
+    let built = scene(study, level, cracked, setup).build()?;
     let elements = built.model.el.len();
     let result = crate::run::run(built, &mut |_| {})?;
     let f = peak_force_n(&result);

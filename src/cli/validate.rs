@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use crate::cases::cracked_plate::{self, Study};
+use crate::cases::cracked_plate::{self, Grips, Study};
 use crate::cases::study::{self, Level};
 use crate::cases::cantilever;
 use crate::error::{Error, Result};
@@ -15,7 +15,8 @@ pub enum Case {
     /// Cantilever tip amplitude, close-packed, 81 / 729 / 6561 elements.
     Cantilever,
     /// Cracked plate: energy criterion (close-packed), toughness criterion (simple cubic) and
-    /// the uncracked plate.
+    /// the uncracked plate, with the seed's displacement-driven edges (rollers) and with
+    /// uniform traction (tables suffixed `_traction`).
     CrackedPlate,
 }
 
@@ -68,23 +69,26 @@ pub fn run(args: Args) -> Result<()> {
         }
         Case::CrackedPlate => {
             let handbook = cracked_plate::handbook_pa();
-            for (name, study_kind, cracked, reference) in [
-                ("cracked_plate_energy", Study::EnergyClosePacked, true, handbook),
-                ("cracked_plate_toughness", Study::ToughnessSimpleCubic, true, handbook),
-                ("cracked_plate_uncracked", Study::EnergyClosePacked, false, cracked_plate::TENSILE_PA),
-            ] {
-                let levels: Vec<Level> = args
-                    .levels
-                    .iter()
-                    .map(|&l| {
-                        study::timed(l, || {
-                            let (p, res) = cracked_plate::run(study_kind, l, cracked)?;
-                            Ok((p.elements, p.stress_pa, res))
+            for (grips, suffix) in [(Grips::Rollers, ""), (Grips::UniformTraction, "_traction")] {
+                let setup = cracked_plate::Setup::with_grips(grips);
+                for (name, study_kind, cracked, reference) in [
+                    ("cracked_plate_energy", Study::EnergyClosePacked, true, handbook),
+                    ("cracked_plate_toughness", Study::ToughnessSimpleCubic, true, handbook),
+                    ("cracked_plate_uncracked", Study::EnergyClosePacked, false, cracked_plate::TENSILE_PA),
+                ] {
+                    let levels: Vec<Level> = args
+                        .levels
+                        .iter()
+                        .map(|&l| {
+                            study::timed(l, || {
+                                let (p, res) = cracked_plate::run(study_kind, l, cracked, &setup)?;
+                                Ok((p.elements, p.stress_pa, res))
+                            })
                         })
-                    })
-                    .collect::<Result<_>>()?;
-                let (t, _) = study::table("peak_stress_pa", reference, &levels, cracked_plate::REFINEMENT);
-                emit(&args.out, name, &t)?;
+                        .collect::<Result<_>>()?;
+                    let (t, _) = study::table("peak_stress_pa", reference, &levels, cracked_plate::REFINEMENT);
+                    emit(&args.out, &format!("{name}{suffix}"), &t)?;
+                }
             }
         }
     }
