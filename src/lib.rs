@@ -8,5 +8,6 @@
 pub mod units;
 pub mod cli;
 pub mod error;
+pub mod empirical;
 
 pub use error::{Error, Result};

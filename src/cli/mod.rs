@@ -3,6 +3,7 @@
 use clap::{Parser, Subcommand};
 
 pub mod empirical;
+pub mod range;
 
 /// demsweep: deterministic 2D DEM of concrete impact, with the empirical formulas beside it.
 #[derive(Debug, Parser)]
