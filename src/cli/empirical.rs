@@ -1,10 +1,11 @@
 //! `demsweep empirical`: the classical formulas for the scenario on the command line, as a
-//! velocity sweep and as thresholds (scabbing velocity and ballistic limit).
+//! velocity sweep, as thresholds (scabbing velocity and ballistic limit), and as a plot.
 //! Defaults are the source report's scenario (SPEC §4; the aggregate size is an assumption).
 
 use std::io::Write;
+use std::path::PathBuf;
 
-use crate::empirical::{Missile, Nose, Target, table};
+use crate::empirical::{Missile, Nose, Target, plot, table};
 use crate::error::{Error, Result};
 
 use super::range;
@@ -60,6 +61,9 @@ pub struct Args {
     /// Print the scabbing velocity and ballistic limit per formula instead of the sweep.
     #[arg(long)]
     pub thresholds: bool,
+    /// Also draw h_s and h_p against velocity (over --v0) to this PNG.
+    #[arg(long)]
+    pub plot: Option<PathBuf>,
 }
 
 /// The library names a bad field `weight_lb`; the command line calls it `--weight-lb`.
@@ -70,7 +74,7 @@ fn flag_error(e: Error) -> Error {
     }
 }
 
-/// Print the sweep or the thresholds.
+/// Print the sweep or the thresholds, and draw the plot if asked.
 pub fn run(args: Args) -> Result<()> {
     let nose = Nose::parse(&args.nose).map_err(flag_error)?;
     let missile = Missile::new(args.weight_lb, args.diameter_in, nose, args.modulus_psi).map_err(flag_error)?;
@@ -96,6 +100,10 @@ pub fn run(args: Args) -> Result<()> {
         }
     };
     written.and_then(|_| out.flush()).map_err(|e| Error::io("<stdout>", e))?;
+
+    if let Some(path) = &args.plot {
+        plot::draw(path, &missile, &target, v_min, v_max)?;
+    }
     Ok(())
 }
 

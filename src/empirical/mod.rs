@@ -10,7 +10,7 @@
 //! [`Formula`] is the registry: every formula and named variant, what it defines
 //! ([`Quantity`]), its prediction and whether the inputs lie inside its stated validity
 //! ([`Validity`]). [`inverse`] finds the scabbing velocity and the ballistic limit, [`table`]
-//! formats sweeps.
+//! formats sweeps, [`plot`] draws the thickness–velocity curves.
 
 mod inputs;
 mod validity;
@@ -36,6 +36,7 @@ pub mod stone_webster;
 pub mod closed_form;
 pub mod inverse;
 pub mod table;
+pub mod plot;
 
 pub use formula::{BrlScabbing, CeaEdfForm, Formula, HughesTensile, PetryClass, Prediction, StoneWebsterC};
 pub use inputs::{MILD_STEEL_MODULUS_PSI, Missile, Nose, Target};
