@@ -95,7 +95,7 @@ fn cea_edf_extension_1493_and_the_origin_of_1496() {
     // "for plain concrete (r = 0) it lowers V_p by 0.548"
     assert_eq!(round(v_ext / v_perf(Formula::CeaEdf(CeaEdfForm::Base), Spherical), 3), 0.548);
 
-    let with_printed_coefficient = ((cea_edf::hp_coefficient() / 0.82) as f64).powf(4.0 / 3.0);
+    let with_printed_coefficient = (cea_edf::hp_coefficient() / 0.82).powf(4.0 / 3.0);
     assert_eq!(round(v_ext * with_printed_coefficient, 0), 1496.0);
     assert_eq!(round(v_perf(Formula::CeaEdf(CeaEdfForm::Base), Spherical) * with_printed_coefficient, 0), 2732.0);
 }

@@ -61,12 +61,12 @@ pub fn adeli_amin_xd(i: f64) -> Option<f64> {
 
 /// Adeli–Amin scabbing ratio h_s/d (`None` beyond I = 21).
 pub fn adeli_amin_hs_over_d(i: f64) -> Option<f64> {
-    (i <= ADELI_AMIN_MAX_I).then(|| 1.8685 + 0.4035 * i - 0.0114 * i * i)
+    (i <= ADELI_AMIN_MAX_I).then_some(1.8685 + 0.4035 * i - 0.0114 * i * i)
 }
 
 /// Adeli–Amin perforation ratio h_p/d (`None` beyond I = 21).
 pub fn adeli_amin_hp_over_d(i: f64) -> Option<f64> {
-    (i <= ADELI_AMIN_MAX_I).then(|| 0.9060 + 0.3214 * i - 0.0106 * i * i)
+    (i <= ADELI_AMIN_MAX_I).then_some(0.9060 + 0.3214 * i - 0.0106 * i * i)
 }
 
 /// Validity of a fit on `MIN_I ≤ I ≤ max_i`.
