@@ -11,6 +11,7 @@ pub mod cases;
 pub mod units;
 pub mod cli;
 pub mod error;
+pub mod empirical;
 
 pub use error::{Error, Result};
 pub mod kernel;

@@ -46,6 +46,10 @@ pub fn pa_to_psi(p_pa: f64) -> f64 {
 pub fn lb_to_kg(m_lb: f64) -> f64 {
     m_lb * KG_PER_LB
 }
+/// lb/ft³ → kg/m³.
+pub fn pcf_to_kg_per_m3(rho_pcf: f64) -> f64 {
+    rho_pcf * KG_PER_M3_PER_PCF
+}
 /// Mass density lb·s²/in⁴ (the source's inch-pound-second unit) → kg/m³.
 pub fn lbs2_per_in4_to_kg_per_m3(rho: f64) -> f64 {
     rho * N_PER_LBF / M_PER_IN.powi(4)
@@ -68,6 +72,12 @@ mod tests {
             assert!((m_to_in(in_to_m(x)) - x).abs() <= 1e-12 * x.max(1.0));
             assert!((pa_to_psi(psi_to_pa(x)) - x).abs() <= 1e-12 * x.max(1.0));
         }
+    }
+
+    #[test]
+    fn pcf_matches_formulas_factor() {
+        // FORMULAS §1: 1 lb/ft³ = 16.01846337 kg/m³.
+        assert!((pcf_to_kg_per_m3(1.0) - 16.018_463_37).abs() < 1e-8);
     }
 
     #[test]

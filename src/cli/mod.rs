@@ -4,6 +4,7 @@ use clap::{Parser, Subcommand};
 
 pub mod bench;
 pub mod empirical;
+pub mod range;
 pub mod run;
 pub mod scene;
 pub mod validate;

@@ -1,8 +1,10 @@
-//! Shared test helpers: materials and small scenes.
+//! Shared test helpers: materials and small scenes for the kernel tests; the report's scenario
+//! and rounding helpers for the empirical tests.
 #![allow(dead_code)]
 
 pub mod golden;
 
+use demsweep::empirical::{Formula, Missile, Nose, Target, inverse};
 use demsweep::material::{FailureCriterion, Material, PoissonPolicy};
 
 /// The cracked-plate concrete of seed §4–5: E = 29.7 GPa, ν = 0.3, σ_ult = 3.44 MPa,
@@ -38,4 +40,30 @@ pub fn elastic(e_pa: f64, nu: f64, rho: f64) -> Material {
         failure: FailureCriterion::None,
         poisson_policy: PoissonPolicy::Refuse,
     }
+}
+
+/// The report's missile with `nose`.
+pub fn missile(nose: Nose) -> Missile {
+    Missile::report(nose)
+}
+
+/// The report's 30 in wall.
+pub fn target() -> Target {
+    Target::report()
+}
+
+/// `x` rounded to `decimals` decimals, as FORMULAS.md prints it.
+pub fn round(x: f64, decimals: i32) -> f64 {
+    let s = 10f64.powi(decimals);
+    (x * s).round() / s
+}
+
+/// The scabbing velocity, ft/s, for the scenario; panics if there is none.
+pub fn v_scab(f: Formula, nose: Nose) -> f64 {
+    inverse::scabbing_velocity(f, &missile(nose), &target()).v_fps().expect("a scabbing velocity")
+}
+
+/// The ballistic limit, ft/s, for the scenario; panics if there is none.
+pub fn v_perf(f: Formula, nose: Nose) -> f64 {
+    inverse::ballistic_limit(f, &missile(nose), &target()).v_fps().expect("a ballistic limit")
 }
