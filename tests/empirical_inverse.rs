@@ -154,7 +154,13 @@ fn scenario() -> impl Strategy<Value = (Missile, Target)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 128, ..ProptestConfig::default() })]
+    // A fixed seed: CI runs the same cases every time (and writes no regression files).
+    #![proptest_config(ProptestConfig {
+        cases: 128,
+        rng_seed: proptest::test_runner::RngSeed::Fixed(0x5EED_2026),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    })]
 
     /// Each x, h_s, h_p is non-decreasing in velocity where its inputs are not outside the
     /// stated validity range, up to the documented drops.
@@ -188,9 +194,15 @@ proptest! {
                     continue;
                 };
                 if in_drop_window(f, q, &m, &t, v) {
-                    prop_assert!(v_fps <= v * (1.0 + 1e-9), "{} {:?}: {v_fps} > {v}", f.id(), q);
+                    // The thickness is reached on both sides of a downward jump here; the part
+                    // before the jump can be narrower than the scan's step and hide between two
+                    // samples, so the answer is a crossing in the same window, not always ≤ v.
                     let reached = f.evaluate(q, &m, &t, v_fps).unwrap();
                     prop_assert!(reached >= h * (1.0 - 1e-9), "{} {:?}: {reached} < {h}", f.id(), q);
+                    prop_assert!(
+                        v_fps <= v * (1.0 + 1e-9) || in_drop_window(f, q, &m, &t, v_fps),
+                        "{} {:?}: {v_fps} past the window of {v}", f.id(), q
+                    );
                 } else {
                     let rel = (v_fps / v - 1.0).abs();
                     prop_assert!(rel <= 1e-9, "{} {} {:?}: v = {v}, back {v_fps} ({rel:e})", f.id(), f.variant(), q);
@@ -205,4 +217,46 @@ fn hughes_drop_window_is_the_documented_one() {
     // The window the round trip excuses is where h_p/d lies between the two join values.
     assert!((hughes::hp_over_d(0.7) - 2.506).abs() < 1e-9);
     assert!((hughes_hp_drop() - 0.014).abs() < 1e-9);
+}
+
+/// Regression (found by `inverse_round_trip` on an unseeded CI run): Kar's h_p jumps down at
+/// the Kennedy branch join x/d = 1.35. The shrunk input put v 0.03 % below the join, where the
+/// thickness is reached only up to the join: a window narrower than the scan's 0.43 % steps
+/// and invisible to its samples, which rise across it. The test expected a velocity ≤ v in drop
+/// windows; what the inverse can promise is the next crossing it resolves, here 0.26 % later,
+/// in the same window (documented in `empirical::inverse`).
+#[test]
+fn kar_perforation_inverse_at_the_branch_join_stays_in_the_drop_window() {
+    let m = Missile::new(1934.957359359767, 5.9075611548210265, Nose::Blunt, 19406991.493375454).unwrap();
+    let t = Target::new(5041.154883216623, 504.11548832166227, 145.0, 30.0, 0.3).unwrap();
+    let v = 132.72754695935396;
+    let (f, q) = (Formula::Kar, Quantity::Perforation);
+    assert!(in_drop_window(f, q, &m, &t, v));
+    let h = f.evaluate(q, &m, &t, v).unwrap();
+    // The thickness is reached from v up to the join only (< 0.04 %), then again 0.26 % later.
+    let at = |r: f64| f.evaluate(q, &m, &t, v * r).unwrap();
+    assert!(at(1.0 - 1e-6) < h && at(1.0001) >= h && at(1.0004) < h && at(1.0028) >= h);
+    let back = inverse::velocity_for(f, q, &m, &t, h).v_fps().unwrap();
+    assert!(f.evaluate(q, &m, &t, back).unwrap() >= h * (1.0 - 1e-9));
+    assert!(back <= v * 1.003 && in_drop_window(f, q, &m, &t, back), "returned {back}, past the window of {v}");
+}
+
+/// Regression (same run): Adeli–Amin's quadratic h_p just under its maximum is reached only in a
+/// window narrower than the scan's step; the inverse said "not reachable".
+#[test]
+fn adeli_amin_inverse_finds_the_top_of_its_parabola() {
+    let m = missile(Nose::Spherical);
+    let t = target();
+    let (f, q) = (Formula::AdeliAmin, Quantity::Perforation);
+    // I at the parabola's top, 0.3214 / (2 × 0.0106): solve for v by bisection on I.
+    let i_top = 0.3214 / (2.0 * 0.0106);
+    let (mut a, mut b) = (1.0, 5000.0);
+    for _ in 0..200 {
+        let mid = 0.5 * (a + b);
+        if demsweep::empirical::impact_factor::impact_factor(&m, &t, mid) < i_top { a = mid } else { b = mid }
+    }
+    let v_top = 0.5 * (a + b);
+    let h_top = f.evaluate(q, &m, &t, v_top).unwrap();
+    let back = inverse::velocity_for(f, q, &m, &t, h_top * (1.0 - 1e-7)).v_fps();
+    assert!(back.is_some_and(|v| (v / v_top - 1.0).abs() < 1e-3), "{back:?} vs the top at {v_top}");
 }

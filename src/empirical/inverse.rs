@@ -4,8 +4,15 @@
 //! Not every formula is monotone (Adeli–Amin's quadratics turn over, Haldar–Hamieh and the
 //! Kennedy/Hughes h_p branches jump slightly), so the answer is the *first* velocity at which the
 //! thickness is reached: a log-uniform scan over [`SCAN_MIN_MPS`, `SCAN_MAX_MPS`] finds the first
-//! sign change, then bisection narrows it to the last representable bit. A formula whose curve
-//! never reaches the thickness in the scan says so ([`Threshold::NotReachable`]).
+//! sign change, a finer scan of that interval ([`SUB_STEPS`]) the first sign change inside it,
+//! then bisection narrows it to the last representable bit. Where a curve tops out (Adeli–Amin's
+//! parabolas) the thickness may be reached only in a window narrower than the scan's step, with
+//! both neighbouring samples below it: every sampled local maximum is refined by a
+//! golden-section search. Where a curve jumps down at a branch join (Kennedy/Degen/Hughes h_p,
+//! Haldar–Hamieh x) and recovers within one step, the samples keep rising across the jump and a
+//! crossing window before it narrower than the step (0.43 % in velocity) is passed over for the
+//! next crossing, at most a few tenths of a per cent later; property tests found both cases.
+//! A formula whose curve never reaches the thickness says so ([`Threshold::NotReachable`]).
 
 use super::{Formula, Missile, Quantity, Target, Validity};
 use crate::units;
@@ -16,6 +23,9 @@ pub const SCAN_MIN_MPS: f64 = 1.0;
 pub const SCAN_MAX_MPS: f64 = 5000.0;
 /// Scan intervals: fine enough (0.43 % per step) that no fold of the fitted curves is jumped.
 pub const SCAN_STEPS: usize = 2000;
+/// Sub-intervals of the first bracketing scan interval (a crossing closer than 1e-6 relative to
+/// a downward jump could still be passed over).
+pub const SUB_STEPS: usize = 4096;
 
 /// The answer of an inverse query.
 #[derive(Debug, Clone, PartialEq)]
@@ -68,14 +78,30 @@ pub fn velocity_for(f: Formula, q: Quantity, m: &Missile, t: &Target, h_in: f64)
         return Threshold::AnyVelocity;
     }
     let ratio = (hi / lo).powf(1.0 / SCAN_STEPS as f64);
-    let mut a = lo;
+    let found = |a: f64, b: f64| {
+        let (a, b) = first_sub_bracket(&gap, a, b);
+        let v_fps = bisect(&gap, a, b);
+        Threshold::Velocity { v_fps, validity: f.validity(q, m, t, v_fps) }
+    };
+    // Samples x[k-2], x[k-1], x[k] with their gaps; all gaps so far are negative.
+    let (mut x2, mut g2) = (lo, gap(lo));
+    let (mut x1, mut g1) = (lo, g2);
     for k in 1..=SCAN_STEPS {
-        let b = if k == SCAN_STEPS { hi } else { lo * ratio.powi(k as i32) };
-        if gap(b) >= 0.0 {
-            let v_fps = bisect(&gap, a, b);
-            return Threshold::Velocity { v_fps, validity: f.validity(q, m, t, v_fps) };
+        let x = if k == SCAN_STEPS { hi } else { lo * ratio.powi(k as i32) };
+        let g = gap(x);
+        if g >= 0.0 {
+            return found(x1, x);
         }
-        a = b;
+        // A sampled local maximum below zero may hide a crossing narrower than the scan's
+        // step (the top of Adeli–Amin's parabolas, the end of a branch that then jumps down):
+        // look for the true maximum between the neighbouring samples.
+        if k >= 2 && g1 > g2 && g1 >= g {
+            let (xm, gm) = golden_max(&gap, x2, x);
+            if gm >= 0.0 {
+                return found(x2, xm);
+            }
+        }
+        (x2, g2, x1, g1) = (x1, g1, x, g);
     }
     Threshold::NotReachable
 }
@@ -88,6 +114,50 @@ pub fn scabbing_velocity(f: Formula, m: &Missile, t: &Target) -> Threshold {
 /// Ballistic limit (perforation velocity) for the target's own thickness.
 pub fn ballistic_limit(f: Formula, m: &Missile, t: &Target) -> Threshold {
     velocity_for(f, Quantity::Perforation, m, t, t.thickness_in)
+}
+
+/// Golden-section search for the largest gap in [a, b]; returns (velocity, gap). Exact for a
+/// unimodal gap; at a downward jump it closes in on the jump's left side.
+fn golden_max(gap: &impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> (f64, f64) {
+    let r = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut c, mut d) = (b - r * (b - a), a + r * (b - a));
+    let (mut gc, mut gd) = (gap(c), gap(d));
+    let mut best = if gc >= gd { (c, gc) } else { (d, gd) };
+    for _ in 0..200 {
+        if gc >= gd {
+            (b, d, gd) = (d, c, gc);
+            c = b - r * (b - a);
+            gc = gap(c);
+        } else {
+            (a, c, gc) = (c, d, gd);
+            d = a + r * (b - a);
+            gd = gap(d);
+        }
+        for (x, g) in [(c, gc), (d, gd)] {
+            if g > best.1 {
+                best = (x, g);
+            }
+        }
+        if best.1 >= 0.0 || b - a <= 1e-15 * b {
+            break;
+        }
+    }
+    best
+}
+
+/// The first of [`SUB_STEPS`] equal sub-intervals of [a, b] (gap(a) < 0 ≤ gap(b)) that
+/// brackets a crossing.
+fn first_sub_bracket(gap: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
+    let h = (b - a) / SUB_STEPS as f64;
+    let mut lo = a;
+    for k in 1..SUB_STEPS {
+        let x = a + h * k as f64;
+        if gap(x) >= 0.0 {
+            return (lo, x);
+        }
+        lo = x;
+    }
+    (lo, b)
 }
 
 /// Narrow `gap(a) < 0 ≤ gap(b)` until a and b are adjacent doubles; returns b, the least
