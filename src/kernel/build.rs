@@ -254,7 +254,9 @@ impl ModelBuilder {
                 classes.push(self.class(a, b)?);
             }
         }
-        let class_of: Vec<u16> = (0..nk * nk).map(|c| c as u16).collect();
+        if nk * nk > u16::MAX as usize {
+            return Err(Error::input("material", format!("{nk} element kinds (material × radius) give too many contact classes")));
+        }
         let el = self.el;
         let mut list: Vec<Contact> = self
             .bonds
@@ -264,7 +266,7 @@ impl ModelBuilder {
                 let (pi, pj) = (el.pos[i as usize], el.pos[j as usize]);
                 let d0 = ((pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2)).sqrt();
                 let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
-                Contact::bonded(i, j, class_of[a * nk + b], d0)
+                Contact::bonded(i, j, super::class_index(a, b, nk), d0)
             })
             .collect();
         list.sort_by_key(|c| (c.i, c.j));
@@ -332,7 +334,6 @@ impl ModelBuilder {
             el,
             contacts,
             classes,
-            class_of,
             kinds: nk,
             motions: self.motions,
             loads: self.loads,

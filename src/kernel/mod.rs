@@ -33,6 +33,11 @@ pub use build::{ModelBuilder, StepChoice};
 /// work). Results do not depend on it: chunking, not threading, fixes the summation order.
 pub const PARALLEL_MIN_CONTACTS: usize = 16_384;
 
+/// The contact class between element kinds a and b (classes are built for every ordered pair).
+pub(crate) fn class_index(a: usize, b: usize, kinds: usize) -> u16 {
+    (a * kinds + b) as u16
+}
+
 /// How the time step was chosen.
 #[derive(Debug, Clone, PartialEq)]
 pub struct StepInfo {
@@ -59,8 +64,6 @@ pub struct Model {
     pub contacts: Contacts,
     /// Contact classes.
     pub classes: Vec<ContactClass>,
-    /// Class of a new contact between kinds a and b: `class_of[a * kinds + b]`.
-    class_of: Vec<u16>,
     kinds: usize,
     /// Prescribed-motion groups.
     pub motions: Vec<MotionGroup>,
@@ -265,14 +268,14 @@ impl Model {
         let pos = &self.el.pos;
         self.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, self.skin_m, &mut self.pairs);
         let el = &self.el;
-        let (class_of, kinds) = (&self.class_of, self.kinds);
+        let kinds = self.kinds;
         let touching = |c: &Contact| {
             let (pi, pj) = (el.pos[c.i as usize], el.pos[c.j as usize]);
             (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.d0 * c.d0
         };
         let fresh = |i: u32, j: u32| {
             let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
-            Contact::frictional(i, j, class_of[a * kinds + b], el.radius[i as usize] + el.radius[j as usize])
+            Contact::frictional(i, j, class_index(a, b, kinds), el.radius[i as usize] + el.radius[j as usize])
         };
         let admit = |i: u32, j: u32| !(el.is_fully_prescribed(i as usize) && el.is_fully_prescribed(j as usize));
         self.contacts.merge_candidates(&self.pairs, touching, fresh, admit, n);
