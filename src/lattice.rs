@@ -292,7 +292,7 @@ mod tests {
         for &(i, j) in &a.bonds {
             let (p, q) = (a.centres[i as usize], a.centres[j as usize]);
             let d = ((q[0] - p[0]).powi(2) + (q[1] - p[1]).powi(2)).sqrt();
-            assert!(d >= 0.02 * (1.0 - 1e-8) && d <= 0.02 * (1.0 + GAP) + 1e-12);
+            assert!((0.02 * (1.0 - 1e-8)..=0.02 * (1.0 + GAP) + 1e-12).contains(&d));
             let (nx, ny) = ((q[0] - p[0]) / d, (q[1] - p[1]) / d);
             fxx += nx * nx;
             fxy += nx * ny;

@@ -62,7 +62,7 @@ mod tests {
     #[test]
     fn psi_matches_spec_factor() {
         // SPEC §1: 1 psi = 6894.757 Pa; FORMULAS §1: 6894.757293168 Pa.
-        assert!((PA_PER_PSI - 6894.757_293_168).abs() < 1e-6);
+        assert!((PA_PER_PSI - 6_894.757_293_168).abs() < 1e-6);
     }
 
     #[test]

@@ -328,7 +328,6 @@ impl ModelBuilder {
             let driven = self.motions.iter().map(|g| g.velocity[0].hypot(g.velocity[1])).fold(0.0, f64::max);
             10.0 * wave.max(initial).max(driven)
         });
-        let n = el.len();
         let mut model = Model {
             rebuild_pos: el.pos.iter().map(|p| [p[0], p[1]]).collect(),
             el,
@@ -365,7 +364,6 @@ impl ModelBuilder {
             },
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
         };
-        debug_assert_eq!(model.el.len(), n);
         model.rebuild_neighbours();
         model.rebuilds = 0;
         model.prime();

@@ -181,7 +181,8 @@ mod tests {
         ]);
         c.rebuild_adjacency(3);
         assert_eq!(c.start, vec![0, 2, 4, 6]);
-        assert_eq!(c.adj, vec![0 << 1, 1 << 1, (0 << 1) | 1, 2 << 1, (1 << 1) | 1, (2 << 1) | 1]);
+        // Entries are (contact << 1) | side.
+        assert_eq!(c.adj, vec![0, 2, 1, 4, 3, 5]);
     }
 
     #[test]

@@ -220,7 +220,8 @@ pub fn advance<const FRAME: bool>(
             x[2] += p.dt_s * v1[2];
             let spin = v1[2].abs() * radius[e];
             let speed2 = v1[0] * v1[0] + v1[1] * v1[1] + spin * spin;
-            if !(speed2 <= limit2) && r.first_bad == usize::MAX {
+            // NaN fails every comparison: `is_le` of a partial comparison catches it.
+            if !speed2.partial_cmp(&limit2).is_some_and(|o| o.is_le()) && r.first_bad == usize::MAX {
                 r.first_bad = e;
             }
             let (dx, dy) = (x[0] - rebuild_pos[e][0], x[1] - rebuild_pos[e][1]);

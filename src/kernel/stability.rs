@@ -21,6 +21,7 @@
 //!   infinite lattice's supremum. `lattice_coefficient` scans the Brillouin zone for it.
 //! * any mesh: Gershgorin's theorem on D⁻¹ M^-½ K M^-½ D with the rotational degrees of
 //!   freedom scaled by the s that minimises the bound (`gershgorin`).
+//!
 //! The measured top frequency of an assembled mesh comes from Lanczos (`lanczos_top`) or a
 //! dense eigen-solve (`dense_top`), both lower estimates of the truth (Rayleigh–Ritz).
 

@@ -50,6 +50,7 @@ impl Elements {
     }
 
     /// Append one free element at rest.
+    #[allow(clippy::too_many_arguments)]
     pub fn push(&mut self, x_m: f64, y_m: f64, radius_m: f64, mass_kg: f64, inertia_kg_m2: f64, kind: u16, body: u16) {
         self.pos.push([x_m, y_m, 0.0]);
         self.vel.push([0.0; 3]);
