@@ -261,7 +261,7 @@ impl ModelBuilder {
         let mut list: Vec<Contact> = self
             .bonds
             .iter()
-            .filter(|&&(i, j)| !(el.is_fully_prescribed(i as usize) && el.is_fully_prescribed(j as usize)))
+            .filter(|&&(i, j)| el.can_interact(i as usize, j as usize))
             .map(|&(i, j)| {
                 let (pi, pj) = (el.pos[i as usize], el.pos[j as usize]);
                 let d0 = ((pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2)).sqrt();

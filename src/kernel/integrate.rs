@@ -118,22 +118,26 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: 
 /// the adjacency's fixed order.
 #[inline(always)]
 fn total_force(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
-    let [mut fx, mut fy, mut tz] = if sums.is_empty() { [0.0; 3] } else { sums[e] };
-    if sums.is_empty() {
-        let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
-        for &a in &contacts.adj[s..t] {
-            let cf = &contacts.force[(a >> 1) as usize];
-            if a & 1 == 0 {
-                fx += cf.fx;
-                fy += cf.fy;
-                tz += cf.ti;
-            } else {
-                fx -= cf.fx;
-                fy -= cf.fy;
-                tz += cf.tj;
+    let [fx, fy, tz] = match sums.get(e) {
+        Some(&summed) => summed,
+        None => {
+            let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
+            let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
+            for &a in &contacts.adj[s..t] {
+                let cf = &contacts.force[(a >> 1) as usize];
+                if a & 1 == 0 {
+                    fx += cf.fx;
+                    fy += cf.fy;
+                    tz += cf.ti;
+                } else {
+                    fx -= cf.fx;
+                    fy -= cf.fy;
+                    tz += cf.tj;
+                }
             }
+            [fx, fy, tz]
         }
-    }
+    };
     let (mut ex, mut ey) = (mass_kg * gravity[0], mass_kg * gravity[1]);
     if load != 0 {
         let l = drive.load_force_n[load as usize - 1];

@@ -277,7 +277,7 @@ impl Model {
             let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
             Contact::frictional(i, j, class_index(a, b, kinds), el.radius[i as usize] + el.radius[j as usize])
         };
-        let admit = |i: u32, j: u32| !(el.is_fully_prescribed(i as usize) && el.is_fully_prescribed(j as usize));
+        let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
         self.contacts.merge_candidates(&self.pairs, touching, fresh, admit, n);
         self.rebuild_pos.clear();
         self.rebuild_pos.extend(self.el.pos.iter().map(|p| [p[0], p[1]]));

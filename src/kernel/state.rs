@@ -85,6 +85,12 @@ impl Elements {
         self.prescribed[e] == 0b111
     }
 
+    /// Whether a contact between elements i and j can matter: not when both are fully
+    /// prescribed (their relative motion is given, and no free element feels the force).
+    pub fn can_interact(&self, i: usize, j: usize) -> bool {
+        !(self.is_fully_prescribed(i) && self.is_fully_prescribed(j))
+    }
+
     /// [1/√m, 1/√m, 1/√I] with 0 in the prescribed dofs: the scaling of the free dofs'
     /// mass-normalised stiffness.
     pub fn free_inv_sqrt_mass(&self, e: usize) -> [f64; 3] {
