@@ -8,4 +8,7 @@ cargo build --release --quiet
 bin=target/release/demsweep
 $bin validate cracked-plate --levels 0,1,2
 $bin validate cantilever --levels 0,1,2
+# Continuum references for the cracked plate (LEFM and a cohesive crack, plane-stress FE): a
+# cross-check in Python (numpy, scipy), outside the product.
+if python3 -c 'import numpy, scipy' 2>/dev/null; then python3 scripts/cohesive_sent.py; fi
 cargo test --release -- --include-ignored

@@ -67,8 +67,10 @@ fn uniform_traction_sits_below_its_own_net_section_limit() {
 }
 
 #[test]
-#[ignore = "open (issue 2): the energy criterion extrapolates to 2.97 MPa (+13.7 %) with the seed's \
-            displacement-driven edges and to 2.36 MPa (−9.7 %) under uniform traction; see the issue note"]
+#[ignore = "blocked (issue 2): eq 4.3 is LEFM for a long strip; for this square plate LEFM gives \
+            2.489 MPa (uniform traction) or 3.017 MPa (edges driven apart), and with σ_ult = 3.44 MPa a \
+            cohesive continuum gives 2.287 / 3.010 MPa; the DEM extrapolates to 2.361 / 2.972 MPa \
+            (scripts/cohesive_sent.py, results/validation/cracked_plate_continuum.csv)"]
 fn energy_criterion_extrapolates_within_2_percent_of_the_handbook_value() {
     let handbook = plate::handbook_pa();
     for name in ["cracked_plate_energy", "cracked_plate_energy_traction"] {
