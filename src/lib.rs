@@ -7,6 +7,7 @@
 
 pub mod analysis;
 pub mod bench;
+mod binary;
 pub mod cases;
 pub mod units;
 pub mod cli;

@@ -2,7 +2,8 @@
 
 use std::path::PathBuf;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
+use crate::run::{Checkpointing, RunCheckpoint};
 use crate::scene::Scene;
 
 /// Arguments of `demsweep run`.
@@ -16,12 +17,34 @@ pub struct Args {
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
+    /// Write `<out>/<scene name>/checkpoint.bin` every N steps (atomically; removed when the
+    /// run completes). 0: never.
+    #[arg(long, default_value_t = 0, value_name = "N")]
+    pub checkpoint_every_steps: u64,
+    /// Continue from `<out>/<scene name>/checkpoint.bin` if it exists (a run that was killed);
+    /// the tables are then those of a run that never stopped.
+    #[arg(long)]
+    pub resume: bool,
 }
 
-/// Run the scene. Nothing is written unless the run completes; tables are written atomically.
+/// Run the scene. No table is written unless the run completes; tables and checkpoints are
+/// written atomically.
 pub fn run(args: Args) -> Result<()> {
     let scene = Scene::from_file(&args.scene)?;
     let built = scene.build().map_err(|e| e.in_file(&args.scene))?;
+    let dir = args.out.join(&built.name);
+    let checkpoint_path = dir.join("checkpoint.bin");
+    let resume = match (args.resume, checkpoint_path.exists()) {
+        (true, true) => {
+            let bytes = std::fs::read(&checkpoint_path).map_err(|e| Error::io(&checkpoint_path, e))?;
+            Some(RunCheckpoint::from_bytes(&bytes).map_err(|e| e.in_file(&checkpoint_path))?)
+        }
+        (true, false) => {
+            eprintln!("{}: no checkpoint, starting from the beginning", checkpoint_path.display());
+            None
+        }
+        (false, _) => None,
+    };
     let info = built.model.step_info.clone();
     eprintln!(
         "{}: {} elements, {} contacts, Δt = {:.4e} s ({}), {} steps",
@@ -33,12 +56,18 @@ pub fn run(args: Args) -> Result<()> {
         (built.duration_s / info.dt_s).ceil()
     );
     let bar = if args.quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(1000) };
-    let result = crate::run::run(built, &mut |f| bar.set_position((f * 1000.0) as u64));
+    let mut save = |c: &RunCheckpoint| crate::table::write_atomic(&checkpoint_path, &c.to_bytes());
+    let every_steps = args.checkpoint_every_steps;
+    let checkpointing = (every_steps > 0).then_some(Checkpointing { every_steps, save: &mut save });
+    let result = crate::run::run_with(built, resume.as_ref(), checkpointing, &mut |f| bar.set_position((f * 1000.0) as u64))
+        .map_err(|e| e.in_file(&checkpoint_path));
     bar.finish_and_clear();
     let result = result?;
-    let dir = args.out.join(&result.name);
     result.summary.write_csv(&dir.join("summary.csv"))?;
     result.series.write_csv(&dir.join("series.csv"))?;
+    if checkpoint_path.exists() {
+        std::fs::remove_file(&checkpoint_path).map_err(|e| Error::io(&checkpoint_path, e))?;
+    }
     let row = &result.summary.rows[0];
     for (h, v) in result.summary.header.iter().zip(row) {
         println!("{h:>28} = {v}");

@@ -7,6 +7,7 @@
 //!    touching frictional contacts with their history and dropping separated ones.
 
 pub mod boundary;
+pub mod checkpoint;
 pub mod build;
 pub mod contacts;
 pub mod detect;

@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod golden;
+pub mod impact;
 
 use demsweep::empirical::{Formula, Missile, Nose, Target, inverse};
 use demsweep::material::{FailureCriterion, Material, PoissonPolicy};

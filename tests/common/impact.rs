@@ -1,0 +1,44 @@
+//! A small steel-into-concrete impact at 250 m/s: bonds break, fragments touch and slide, two
+//! materials meet. The kernel tests that need "everything happening at once" use it.
+
+use demsweep::kernel::{Model, ModelBuilder};
+use demsweep::lattice::{self, Rect};
+use demsweep::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};
+
+/// The model, with stage 1 forced onto the parallel path whatever its size.
+pub fn model() -> Model {
+    let r = 0.004;
+    let mut b = ModelBuilder::new(Plane::Strain, 0.05);
+    let mut concrete = super::plate_concrete(FailureCriterion::StrengthEnergy);
+    concrete.poisson_ratio = 0.2;
+    let c = b.add_material(concrete);
+    let mut steel = super::elastic(200e9, 0.3, 7850.0);
+    steel.poisson_policy = PoissonPolicy::ClampToOneThird;
+    let s = b.add_material(steel);
+    let target = lattice::close_packed(&Rect { x_min_m: 0.0, x_max_m: 0.4, y_min_m: 0.0, y_max_m: 0.12 }, r).unwrap();
+    let projectile = lattice::close_packed(&Rect { x_min_m: 0.18, x_max_m: 0.22, y_min_m: 0.1205, y_max_m: 0.2 }, r).unwrap();
+    b.add_body("target", &target, Arrangement::ClosePacked, c, &[], [0.0; 3]);
+    b.add_body("projectile", &projectile, Arrangement::ClosePacked, s, &[], [0.0, -250.0, 0.0]);
+    let mut m = b.build().unwrap();
+    m.parallel_min_contacts = 0;
+    m
+}
+
+/// Every bit a step can change: element state, contacts with their history, the ledger and
+/// the counters.
+pub fn state_bits(m: &Model) -> Vec<u64> {
+    let mut bits = Vec::new();
+    for e in 0..m.el.len() {
+        bits.extend(m.el.pos[e].iter().chain(&m.el.vel[e]).chain(&m.el.force[e]).map(|v| v.to_bits()));
+    }
+    for c in &m.contacts.list {
+        bits.extend([c.i as u64, c.j as u64, c.class as u64, c.bond as u64, c.d0.to_bits(), c.ut.to_bits(), c.dp.to_bits()]);
+    }
+    let l = m.ledger;
+    bits.extend(
+        [l.external_j, l.plastic_j, l.fracture_j, l.friction_j, l.mass_damping_j, l.contact_damping_j, l.initial_j, m.time_s]
+            .map(f64::to_bits),
+    );
+    bits.extend([l.bonds_broken, m.steps, m.rebuilds]);
+    bits
+}

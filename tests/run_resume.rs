@@ -1,0 +1,99 @@
+//! A run killed part-way and resumed from its last checkpoint writes the tables of a run that
+//! never stopped (the kernel's restart equivalence, tests/restart_equivalence.rs, carried up to
+//! the run and the `demsweep run` command).
+
+use std::process::Command;
+
+use demsweep::Error;
+use demsweep::cases::cracked_plate::{self, Setup, Study};
+use demsweep::run::{self, Checkpointing, RunCheckpoint};
+use demsweep::scene::Scene;
+use demsweep::table::Table;
+
+/// The coarse energy-criterion plate: the crack runs during the second half of the run.
+fn plate() -> Scene {
+    cracked_plate::scene(Study::EnergyClosePacked, 0, true, &Setup::default())
+}
+
+/// The summary without the columns that time the run.
+fn timeless(summary: &Table) -> Vec<(String, String)> {
+    summary
+        .header
+        .iter()
+        .cloned()
+        .zip(summary.rows[0].iter().cloned())
+        .filter(|(h, _)| h != "wall_s" && h != "element_steps_per_s")
+        .collect()
+}
+
+/// Run the plate, "killed" right after its `kill_at`-th checkpoint; returns that checkpoint.
+fn killed_run(every_steps: u64, kill_at: usize) -> RunCheckpoint {
+    let mut saved = Vec::new();
+    let mut save = |c: &RunCheckpoint| {
+        saved.push(c.to_bytes());
+        if saved.len() == kill_at { Err(Error::input("test", "killed")) } else { Ok(()) }
+    };
+    let err = run::run_with(plate().build().unwrap(), None, Some(Checkpointing { every_steps, save: &mut save }), &mut |_| {});
+    assert!(err.is_err(), "the run was not interrupted");
+    RunCheckpoint::from_bytes(saved.last().unwrap()).unwrap()
+}
+
+#[test]
+fn a_resumed_run_writes_the_tables_of_an_uninterrupted_one() {
+    let straight = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
+    let checkpoint = killed_run(3000, 3);
+    let resumed = run::run_with(plate().build().unwrap(), Some(&checkpoint), None, &mut |_| {}).unwrap();
+    let broken = |r: &run::RunResult| r.column("bonds_broken").unwrap();
+    let at_kill = broken(&straight)[checkpoint.values.len() - 1];
+    assert!(at_kill > 0.0 && *broken(&straight).last().unwrap() > at_kill + 20.0, "the kill must fall while the crack runs");
+    assert_eq!(resumed.series, straight.series);
+    assert_eq!(timeless(&resumed.summary), timeless(&straight.summary));
+}
+
+#[test]
+fn demsweep_run_resume_continues_a_killed_run_and_removes_its_checkpoint() {
+    let dir = std::env::temp_dir().join(format!("demsweep-resume-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene_path = dir.join("plate.toml");
+    std::fs::write(&scene_path, plate().to_toml()).unwrap();
+    let name = plate().scene.name;
+    let run_dir = |out: &str| dir.join(out).join(&name);
+    let demsweep = |out: &str, extra: &[&str]| {
+        Command::new(env!("CARGO_BIN_EXE_demsweep"))
+            .args(["run", "--quiet", "--out"])
+            .arg(dir.join(out))
+            .args(extra)
+            .arg(&scene_path)
+            .output()
+            .unwrap()
+    };
+    let tables = |out: &str| {
+        let series = Table::read_csv(&run_dir(out).join("series.csv")).unwrap();
+        (series, timeless(&Table::read_csv(&run_dir(out).join("summary.csv")).unwrap()))
+    };
+    assert!(demsweep("straight", &[]).status.success());
+
+    // Checkpointing on: the same tables, and no checkpoint left behind.
+    assert!(demsweep("checkpointed", &["--checkpoint-every-steps", "5000"]).status.success());
+    assert_eq!(tables("checkpointed"), tables("straight"));
+    assert!(!run_dir("checkpointed").join("checkpoint.bin").exists());
+
+    // A killed run's checkpoint where `--resume` looks for it.
+    std::fs::create_dir_all(run_dir("resumed")).unwrap();
+    std::fs::write(run_dir("resumed").join("checkpoint.bin"), killed_run(5000, 2).to_bytes()).unwrap();
+    let out = demsweep("resumed", &["--resume"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(tables("resumed"), tables("straight"));
+    assert!(!run_dir("resumed").join("checkpoint.bin").exists());
+
+    // A damaged checkpoint is refused with its path, exit code 2, and left where it is.
+    std::fs::create_dir_all(run_dir("damaged")).unwrap();
+    std::fs::write(run_dir("damaged").join("checkpoint.bin"), &killed_run(5000, 2).to_bytes()[..1000]).unwrap();
+    let out = demsweep("damaged", &["--resume"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(stderr.contains("checkpoint.bin") && stderr.contains("truncated"), "{stderr}");
+    assert!(run_dir("damaged").join("checkpoint.bin").exists() && !run_dir("damaged").join("series.csv").exists());
+    let _ = std::fs::remove_dir_all(&dir);
+}
