@@ -1,12 +1,17 @@
 //! A small steel-into-concrete impact at 250 m/s: bonds break, fragments touch and slide, two
 //! materials meet. The kernel tests that need "everything happening at once" use it.
 
-use demsweep::kernel::{Model, ModelBuilder};
+use demsweep::kernel::{Model, ModelBuilder, StepChoice};
 use demsweep::lattice::{self, Rect};
 use demsweep::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};
 
 /// The model, with stage 1 forced onto the parallel path whatever its size.
 pub fn model() -> Model {
+    with_step(None)
+}
+
+/// The model at `dt_s` instead of the step the kernel chooses.
+pub fn with_step(dt_s: Option<f64>) -> Model {
     let r = 0.004;
     let mut b = ModelBuilder::new(Plane::Strain, 0.05);
     let mut concrete = super::plate_concrete(FailureCriterion::StrengthEnergy);
@@ -19,6 +24,9 @@ pub fn model() -> Model {
     let projectile = lattice::close_packed(&Rect { x_min_m: 0.18, x_max_m: 0.22, y_min_m: 0.1205, y_max_m: 0.2 }, r).unwrap();
     b.add_body("target", &target, Arrangement::ClosePacked, c, &[], [0.0; 3]);
     b.add_body("projectile", &projectile, Arrangement::ClosePacked, s, &[], [0.0, -250.0, 0.0]);
+    if let Some(dt_s) = dt_s {
+        b.step = StepChoice::Fixed { dt_s };
+    }
     let mut m = b.build().unwrap();
     m.parallel_min_contacts = 0;
     m

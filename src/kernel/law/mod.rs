@@ -85,11 +85,11 @@ pub struct Kinematics {
 #[inline(always)]
 pub fn interact<const DAMP: bool>(c: &mut Contact, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
     let opening = g.d_m - c.d0;
-    let ut_trial = c.ut + g.vt_mps * dt_s;
+    let slip = g.vt_mps * dt_s;
     let (mut f_n, mut f_t);
     if c.bond == Bond::Intact {
         let (f, w) = normal::bonded(opening, &mut c.dp, k.kn_n_per_m, k.strength.normal_force_n);
-        let (ft, ut, ws) = tangential::capped_spring(ut_trial, k.kt_n_per_m, k.strength.shear_force_n);
+        let (ft, ut, ws) = tangential::capped_spring(c.ut, slip, k.kt_n_per_m, k.strength.shear_force_n);
         diss.plastic_j += w + ws;
         if failure::breaks(c.dp, k.strength.plastic_opening_at_break_m) {
             diss.fracture_j += failure::released_energy_j(f, ft, k.kn_n_per_m, k.kt_n_per_m);
@@ -112,7 +112,7 @@ pub fn interact<const DAMP: bool>(c: &mut Contact, k: &ContactClass, g: &Kinemat
         }
         return force(g, f_n, f_t);
     }
-    frictional::<DAMP>(c, k, g, opening, ut_trial, dt_s, diss)
+    frictional::<DAMP>(c, k, g, opening, slip, dt_s, diss)
 }
 
 #[inline(always)]
@@ -121,13 +121,13 @@ fn frictional<const DAMP: bool>(
     k: &ContactClass,
     g: &Kinematics,
     opening: f64,
-    ut_trial: f64,
+    slip: f64,
     dt_s: f64,
     diss: &mut Dissipation,
 ) -> ContactForce {
     let mut f_n = normal::frictional(opening, k.kn_n_per_m);
     let limit = k.friction * (-f_n) + k.cohesion_n;
-    let (mut f_t, ut, w) = tangential::capped_spring(ut_trial, k.kt_n_per_m, limit);
+    let (mut f_t, ut, w) = tangential::capped_spring(c.ut, slip, k.kt_n_per_m, limit);
     c.ut = ut;
     diss.friction_j += w;
     if DAMP {
