@@ -282,19 +282,7 @@ mod tests {
     use super::*;
 
     fn concrete() -> Material {
-        Material {
-            name: "concrete".into(),
-            density_kg_per_m3: 2400.0,
-            youngs_modulus_pa: 29.7e9,
-            poisson_ratio: 0.3,
-            tensile_strength_pa: 3.44e6,
-            compressive_strength_pa: 30e6,
-            fracture_toughness_pa_sqrt_m: 1.0e6,
-            friction_coefficient: 0.5,
-            cohesion_n_per_m: 0.0,
-            failure: FailureCriterion::StrengthEnergy,
-            poisson_policy: PoissonPolicy::Refuse,
-        }
+        crate::cases::cracked_plate::material(FailureCriterion::StrengthEnergy)
     }
 
     #[test]

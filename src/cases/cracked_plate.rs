@@ -49,7 +49,7 @@
 use crate::error::Result;
 use crate::kernel::boundary::{Profile, Servo};
 use crate::lattice::Rect;
-use crate::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};
+use crate::material::{Arrangement, FailureCriterion, Material, Plane, PoissonPolicy};
 use crate::run::RunResult;
 use crate::scene::{
     BodySpec, CrackSpec, Damping, Dof, FixSpec, General, LoadSpec, MaterialSpec, OutputSpec, ProbeQuantity, ProbeSpec,
@@ -220,8 +220,8 @@ pub fn scene(study: Study, level: u32, cracked: bool, setup: &Setup) -> Scene {
         time_step: TimeStep::default(),
         damping: Damping { alpha_per_s: Some(2.0 * setup.damping_ratio * omega1), relative_to_rigid_motion: true, ..Default::default() },
         material: vec![
-            MaterialSpec { name: "platen".into(), fracture_toughness_pa_sqrt_m: PLATEN_TOUGHNESS_FACTOR * TOUGHNESS_PA_SQRT_M, ..concrete(study) },
-            concrete(study),
+            MaterialSpec { name: "platen".into(), fracture_toughness_pa_sqrt_m: PLATEN_TOUGHNESS_FACTOR * TOUGHNESS_PA_SQRT_M, ..concrete(study.failure()) },
+            concrete(study.failure()),
         ],
         body: vec![BodySpec {
             name: "plate".into(),
@@ -262,20 +262,26 @@ pub fn scene(study: Study, level: u32, cracked: bool, setup: &Setup) -> Scene {
     }
 }
 
-fn concrete(study: Study) -> MaterialSpec {
+/// The seed's concrete (§4–5) with the given failure criterion, as a scene material.
+pub fn concrete(failure: FailureCriterion) -> MaterialSpec {
     MaterialSpec {
         name: "concrete".into(),
-            density_kg_per_m3: DENSITY_KG_PER_M3,
-            youngs_modulus_pa: MODULUS_PA,
-            poisson_ratio: POISSON,
-            tensile_strength_pa: TENSILE_PA,
-            compressive_strength_pa: 10.0 * TENSILE_PA,
-            fracture_toughness_pa_sqrt_m: TOUGHNESS_PA_SQRT_M,
-            friction_coefficient: 0.5,
-            cohesion_n_per_m: 0.0,
-            failure: study.failure(),
-            poisson_policy: PoissonPolicy::Refuse,
+        density_kg_per_m3: DENSITY_KG_PER_M3,
+        youngs_modulus_pa: MODULUS_PA,
+        poisson_ratio: POISSON,
+        tensile_strength_pa: TENSILE_PA,
+        compressive_strength_pa: 10.0 * TENSILE_PA,
+        fracture_toughness_pa_sqrt_m: TOUGHNESS_PA_SQRT_M,
+        friction_coefficient: 0.5,
+        cohesion_n_per_m: 0.0,
+        failure,
+        poisson_policy: PoissonPolicy::Refuse,
     }
+}
+
+/// The same as a kernel material (what the kernel tests build models from).
+pub fn material(failure: FailureCriterion) -> Material {
+    concrete(failure).to_material()
 }
 
 /// The width over which the lattice carries a uniaxial load, m: the span of the bonds that a

@@ -11,19 +11,7 @@ use demsweep::material::{FailureCriterion, Material, PoissonPolicy};
 /// The cracked-plate concrete of seed §4–5: E = 29.7 GPa, ν = 0.3, σ_ult = 3.44 MPa,
 /// K_Ic = 1 MPa√m.
 pub fn plate_concrete(failure: FailureCriterion) -> Material {
-    Material {
-        name: "concrete".into(),
-        density_kg_per_m3: 2400.0,
-        youngs_modulus_pa: 29.7e9,
-        poisson_ratio: 0.3,
-        tensile_strength_pa: 3.44e6,
-        compressive_strength_pa: 30e6,
-        fracture_toughness_pa_sqrt_m: 1.0e6,
-        friction_coefficient: 0.5,
-        cohesion_n_per_m: 0.0,
-        failure,
-        poisson_policy: PoissonPolicy::Refuse,
-    }
+    demsweep::cases::cracked_plate::material(failure)
 }
 
 /// An elastic material that never breaks.
