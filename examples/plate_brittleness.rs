@@ -40,7 +40,7 @@ fn main() {
         let n = built.model.el.len();
         let result = demsweep::run::run(built, &mut |_| {}).expect("run");
         let stress = plate::peak_force_n(&result) / (plate::net_width_m(Study::EnergyClosePacked, level) * plate::THICKNESS_M);
-        let get = |c: &str| result.summary.rows[0][result.summary.column(c).expect(c)].parse::<f64>().expect(c);
+        let get = |c: &str| result.summary_table().get(0, c).expect(c).parse::<f64>().expect(c);
         let per_gf = |j: f64| j / ((plate::WIDTH_M - plate::CRACK_M) * plate::THICKNESS_M * g_f);
         println!(
             "level {level}: {n} elements, peak {stress:.5e} Pa ({:+.2} % vs handbook); bonds broken {}, plastic work {:.3} and fracture energy {:.3} G_f per unit ligament area",

@@ -7,7 +7,7 @@ use std::time::Instant;
 use crate::error::Result;
 use crate::kernel::{Model, ModelBuilder};
 use crate::lattice::{self, Rect};
-use crate::material::{Arrangement, FailureCriterion, Material, Plane, PoissonPolicy};
+use crate::material::{Arrangement, Material, Plane};
 
 /// Elements per row of the benchmark block.
 pub const COLUMNS: usize = 120;
@@ -26,31 +26,27 @@ pub fn workload(columns: usize, rows: usize) -> Result<Model> {
     };
     let lat = lattice::close_packed(&rect, r)?;
     let mut b = ModelBuilder::new(Plane::Strain, 0.0176);
-    let m = b.add_material(Material {
-        name: "concrete".into(),
-        density_kg_per_m3: 2320.0,
-        youngs_modulus_pa: 21.5e9,
-        poisson_ratio: 0.2,
+    let concrete = Material {
         tensile_strength_pa: 2.07e6,
         compressive_strength_pa: 20.7e6,
         fracture_toughness_pa_sqrt_m: 1.0e6,
-        friction_coefficient: 0.5,
-        cohesion_n_per_m: 0.0,
-        failure: FailureCriterion::None,
-        poisson_policy: PoissonPolicy::Refuse,
-    });
-    b.add_body("block", &lat, Arrangement::ClosePacked, m, &[], [0.0; 3]);
-    let mut model = b.build()?;
+        ..Material::elastic("concrete", 21.5e9, 0.2, 2320.0)
+    };
+    let m = b.add_material(concrete);
+    let body = b.add_body("block", &lat, Arrangement::ClosePacked, m, &[], [0.0; 3]);
+    // Velocities are set before the model is built, so the integrator is primed with them.
     let mut s = 0x9E37_79B9_7F4A_7C15u64;
-    for v in model.el.vel.iter_mut() {
+    for e in body {
+        let mut v = [0.0; 3];
         for c in v.iter_mut().take(2) {
             s ^= s << 13;
             s ^= s >> 7;
             s ^= s << 17;
             *c = (s >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
         }
+        b.set_velocity(e, v);
     }
-    Ok(model)
+    b.build()
 }
 
 /// One benchmark measurement.
@@ -88,7 +84,7 @@ pub fn measure(columns: usize, rows: usize, steps: u64, repeats: usize, threads:
         }
         times.sort_by(f64::total_cmp);
         let median = times[times.len() / 2];
-        let (n, c) = (model.el.len(), model.contacts.len());
+        let (n, c) = (model.el.len(), model.state.contacts.len());
         Ok(Figures {
             elements: n,
             contacts: c,

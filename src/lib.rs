@@ -7,7 +7,6 @@
 
 pub mod analysis;
 pub mod bench;
-mod binary;
 pub mod cases;
 pub mod units;
 pub mod cli;

@@ -57,10 +57,13 @@ pub enum PoissonPolicy {
     ClampToOneThird,
 }
 
-/// A material as the scene gives it, in SI.
-#[derive(Debug, Clone, PartialEq)]
+/// A material as the scene gives it (`[[material]]`), in SI. The scene file deserialises into
+/// this struct directly, so a new constant is one field here (with its default) and the law part
+/// that reads it.
+#[derive(Debug, Clone, PartialEq, serde::Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
 pub struct Material {
-    /// Name used in messages.
+    /// Name, referred to by bodies and used in messages.
     pub name: String,
     /// Mass density, kg/m³.
     pub density_kg_per_m3: f64,
@@ -69,19 +72,40 @@ pub struct Material {
     /// Poisson's ratio ν.
     pub poisson_ratio: f64,
     /// Quasi-static tensile strength σ_ult, Pa (unused for `FailureCriterion::None`).
+    #[serde(default)]
     pub tensile_strength_pa: f64,
-    /// Quasi-static compressive strength f'c, Pa (compaction law; not used by the kernel yet).
+    /// Quasi-static compressive strength f'c, Pa (the compaction law, eq 6.11).
+    #[serde(default)]
     pub compressive_strength_pa: f64,
     /// Fracture toughness K_Ic, Pa·√m.
+    #[serde(default)]
     pub fracture_toughness_pa_sqrt_m: f64,
     /// Coulomb friction coefficient μ of frictional contacts (eq 2.1).
+    #[serde(default = "default_friction")]
     pub friction_coefficient: f64,
     /// Cohesion c of frictional contacts (eq 2.1), N per metre of thickness.
+    #[serde(default)]
     pub cohesion_n_per_m: f64,
     /// Bond failure law.
+    #[serde(default = "default_failure")]
     pub failure: FailureCriterion,
     /// Policy for ν* > 1/3 on hexagonal/irregular lattices.
+    #[serde(default)]
     pub poisson_policy: PoissonPolicy,
+    /// Strain-rate effects on this material's bonds (seed §6, eq 6.6–6.15); off when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rate: Option<crate::kernel::law::rate::RateSpec>,
+    /// Compaction of this material's bonds in compression (eq 6.11, Fig 6.1); off when absent.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compaction: Option<crate::kernel::law::compaction::CompactionSpec>,
+}
+
+fn default_friction() -> f64 {
+    0.5
+}
+
+fn default_failure() -> FailureCriterion {
+    FailureCriterion::None
 }
 
 /// Effective in-plane constants (eq 1.4–1.5).
@@ -105,7 +129,7 @@ pub struct Stiffness {
 /// Bond strength parameters in the form the bond law uses for all three criteria:
 /// a tensile plateau force, a shear plateau force, and the plastic opening at which the bond
 /// breaks. The brittle criteria are the special case `plastic_opening_at_break_m = 0`.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize, serde::Serialize)]
 pub struct Strength {
     /// Normal force at which the tensile plateau starts, N (∞: never).
     pub normal_force_n: f64,
@@ -125,6 +149,26 @@ impl Strength {
 }
 
 impl Material {
+    /// An elastic material that never breaks, with no optional law: μ = 0.5, no cohesion,
+    /// strengths 0 (unused without a failure criterion), ν* > 1/3 refused.
+    pub fn elastic(name: &str, youngs_modulus_pa: f64, poisson_ratio: f64, density_kg_per_m3: f64) -> Material {
+        Material {
+            name: name.to_string(),
+            density_kg_per_m3,
+            youngs_modulus_pa,
+            poisson_ratio,
+            tensile_strength_pa: 0.0,
+            compressive_strength_pa: 0.0,
+            fracture_toughness_pa_sqrt_m: 0.0,
+            friction_coefficient: default_friction(),
+            cohesion_n_per_m: 0.0,
+            failure: FailureCriterion::None,
+            poisson_policy: PoissonPolicy::Refuse,
+            rate: None,
+            compaction: None,
+        }
+    }
+
     /// E*, ν* for the given plane idealisation (eq 1.4–1.5).
     pub fn effective(&self, plane: Plane) -> Effective {
         let (e, nu) = (self.youngs_modulus_pa, self.poisson_ratio);
@@ -272,6 +316,16 @@ impl Material {
                 pos("tensile_strength_pa", self.tensile_strength_pa)?;
                 pos("fracture_toughness_pa_sqrt_m", self.fracture_toughness_pa_sqrt_m)?;
             }
+        }
+        if let Some(r) = &self.rate {
+            r.validate(&format!("{prefix}.rate"))?;
+            if self.failure != FailureCriterion::None {
+                pos("tensile_strength_pa", self.tensile_strength_pa)?;
+            }
+        }
+        if let Some(c) = &self.compaction {
+            c.validate(&format!("{prefix}.compaction"))?;
+            pos("compressive_strength_pa", self.compressive_strength_pa)?;
         }
         Ok(())
     }

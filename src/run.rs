@@ -1,13 +1,95 @@
-//! Running a built scene: a pure function of the scene returning its series and a one-row
-//! summary. It prints nothing and writes nothing (the caller decides where tables go, and
+//! Running a built scene: a pure function of the scene returning its series and a typed
+//! summary row. It prints nothing and writes nothing (the caller decides where tables go, and
 //! where checkpoints go: a run hands them to a callback and can resume from one).
+//!
+//! A run ends at the scene's duration, or earlier when a [`StopRule`] says its outcome is
+//! settled (the duration is then the hard cap, and hitting it is reported). Its threading is
+//! explicit ([`Options::threading`]): a lone run uses the rayon pool it is called from, a run
+//! inside a sweep steps on its own thread.
 
 use std::time::Instant;
 
-use crate::binary::{Reader, Writer, bad};
-use crate::error::Result;
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+use crate::kernel::{Model, Threading};
 use crate::scene::Built;
 use crate::table::Table;
+
+/// The run's one-row summary: counts, time step, energies by mechanism, probe extremes, cost.
+/// Serialises to a table row (`table::Table::from_row`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RunSummary {
+    /// Scene name.
+    pub scene: String,
+    /// Elements.
+    pub elements: u64,
+    /// Contacts at the start.
+    pub contacts_initial: u64,
+    /// Intact bonds at the start.
+    pub bonds_initial: u64,
+    /// Bonds broken.
+    pub bonds_broken: u64,
+    /// Steps taken.
+    pub steps: u64,
+    /// Time step, s.
+    pub dt_s: f64,
+    /// Stability limit of the frequency bound, s.
+    pub dt_bound_s: f64,
+    /// The frequency bound, rad/s.
+    pub omega_bound_rad_per_s: f64,
+    /// Simulated time, s.
+    pub simulated_s: f64,
+    /// Why the run ended: `duration` (the scene's duration, no stop rule), the stop rule's
+    /// reason, or `time_cap` (a stop rule never settled within the duration).
+    pub end_reason: String,
+    /// Kinetic energy at the end, J.
+    pub kinetic_energy_j: f64,
+    /// Strain energy at the end, J.
+    pub strain_energy_j: f64,
+    /// Work of loads, gravity and prescribed motions, J.
+    pub external_work_j: f64,
+    /// Mass-proportional damping, J.
+    pub mass_damping_j: f64,
+    /// What the contacts dissipated, by mechanism, J (`law::Dissipation`).
+    pub contacts: Columns,
+    /// Everything dissipated, J.
+    pub dissipated_j: f64,
+    /// Energy balance residual, J.
+    pub energy_residual_j: f64,
+    /// The residual over the energy put in (initial + |external|): the ledger's closure.
+    pub energy_error: f64,
+    /// Neighbour rebuilds.
+    pub neighbour_rebuilds: u64,
+    /// Wall time of the stepping loop, s (of the resumed part, after a resume).
+    pub wall_s: f64,
+    /// Element-steps per second of wall time.
+    pub element_steps_per_s: f64,
+    /// Per probe: `<name>_final`, `<name>_min`, `<name>_max`.
+    pub probes: Columns,
+}
+
+/// Named values that become columns of a row (a map when serialised).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Columns(pub Vec<(String, f64)>);
+
+impl Serialize for Columns {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut m = s.serialize_map(Some(self.0.len()))?;
+        for (k, v) in &self.0 {
+            m.serialize_entry(k, v)?;
+        }
+        m.end()
+    }
+}
+
+impl Columns {
+    /// The value of column `name`.
+    pub fn get(&self, name: &str) -> Option<f64> {
+        self.0.iter().find(|(k, _)| k == name).map(|p| p.1)
+    }
+}
 
 /// The outcome of one run.
 #[derive(Debug, Clone)]
@@ -16,10 +98,12 @@ pub struct RunResult {
     pub name: String,
     /// Probe time series: `time_s` then one column per probe.
     pub series: Table,
-    /// One row: counts, time step, energies, probe extremes, cost.
-    pub summary: Table,
+    /// The summary row.
+    pub summary: RunSummary,
     /// Probe values as numbers, row-major like `series`.
     pub values: Vec<Vec<f64>>,
+    /// The model at the end.
+    pub model: Model,
 }
 
 impl RunResult {
@@ -28,57 +112,70 @@ impl RunResult {
         let k = self.series.column(name)?;
         Some(self.values.iter().map(|r| r[k]).collect())
     }
+
+    /// The summary as a one-row table.
+    pub fn summary_table(&self) -> Table {
+        Table::from_row(&self.summary).expect("a run summary is a flat row")
+    }
 }
 
 fn fmt(v: f64) -> String {
     format!("{v:.9e}")
 }
 
+/// Decides when a run's outcome is settled, looking at the model every few steps. Its own
+/// state travels in the run's checkpoints, so a resumed run decides as one that never stopped.
+pub trait StopRule {
+    /// Steps between looks.
+    fn every_steps(&self) -> u64;
+    /// Look at the model: `Some(reason)` ends the run.
+    fn check(&mut self, model: &Model) -> Option<String>;
+    /// The rule's state as bytes.
+    fn save(&self) -> Vec<u8>;
+    /// Restore the state from [`StopRule::save`]'s bytes.
+    fn load(&mut self, bytes: &[u8]) -> Result<()>;
+}
+
 /// Where a run stands: the model's state ([`crate::kernel::Model::checkpoint`]), the series
-/// recorded so far and the initial counts the summary reports.
-#[derive(Debug, Clone, PartialEq)]
+/// recorded so far, the stop rule's state and the initial counts the summary reports.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunCheckpoint {
     /// The model's checkpoint bytes.
     pub model: Vec<u8>,
     /// Series rows recorded so far (`time_s` then the probes).
     pub values: Vec<Vec<f64>>,
+    /// The stop rule's state (empty without one).
+    pub stop: Vec<u8>,
     /// Contacts at the start of the run.
     pub contacts_initial: u64,
     /// Intact bonds at the start of the run.
     pub bonds_initial: u64,
 }
 
-const RUN_MAGIC: &[u8; 8] = b"DEMSWRN\0";
+const RUN_MAGIC: [u8; 8] = *b"DEMSWRN\x02";
 
 impl RunCheckpoint {
     /// As bytes (bit-exact).
     pub fn to_bytes(&self) -> Vec<u8> {
-        let mut w = Writer(Vec::with_capacity(self.model.len() + 64 + 8 * self.values.iter().map(Vec::len).sum::<usize>()));
-        w.bytes(RUN_MAGIC);
-        w.u64(self.contacts_initial);
-        w.u64(self.bonds_initial);
-        w.u64(self.values.len() as u64);
-        w.u64(self.values.first().map_or(0, Vec::len) as u64);
-        self.values.iter().for_each(|r| w.f64s(r));
-        w.u64(self.model.len() as u64);
-        w.bytes(&self.model);
-        w.0
+        let mut out = RUN_MAGIC.to_vec();
+        out.extend(postcard::to_stdvec(self).expect("a run checkpoint serialises"));
+        out
     }
 
     /// From bytes written by [`RunCheckpoint::to_bytes`].
     pub fn from_bytes(bytes: &[u8]) -> Result<Self> {
-        let mut r = Reader::new(bytes);
-        if r.take::<8>()? != *RUN_MAGIC {
-            return Err(bad("not a demsweep run checkpoint (bad magic bytes)".into()));
+        let bad = |m: String| Error::input("checkpoint", m);
+        if bytes.len() < RUN_MAGIC.len() || bytes[..RUN_MAGIC.len()] != RUN_MAGIC {
+            return Err(bad("not a demsweep run checkpoint (bad magic bytes or another format version)".into()));
         }
-        let (contacts_initial, bonds_initial) = (r.u64()?, r.u64()?);
-        let rows = r.len("series rows", 8)?;
-        let cols = r.len("series columns", 8 * rows.max(1))?;
-        let values = (0..rows).map(|_| (0..cols).map(|_| r.f64()).collect::<Result<Vec<_>>>()).collect::<Result<Vec<_>>>()?;
-        let n = r.len("model bytes", 1)?;
-        let model = r.slice(n)?.to_vec();
-        r.finish()?;
-        Ok(RunCheckpoint { model, values, contacts_initial, bonds_initial })
+        let (c, rest) = postcard::take_from_bytes::<RunCheckpoint>(&bytes[RUN_MAGIC.len()..]).map_err(|e| match e {
+            postcard::Error::DeserializeUnexpectedEnd => bad("truncated: the bytes end before the checkpoint does".into()),
+            other => bad(format!("damaged: {other}")),
+        })?;
+        if !rest.is_empty() {
+            return Err(bad(format!("{} bytes after the end of the checkpoint", rest.len())));
+        }
+        Ok(c)
     }
 }
 
@@ -91,59 +188,88 @@ pub struct Checkpointing<'a> {
     pub save: &'a mut dyn FnMut(&RunCheckpoint) -> Result<()>,
 }
 
+/// How to run.
+#[derive(Default)]
+pub struct Options<'a> {
+    /// Where the steps run.
+    pub threading: Threading,
+    /// Continue from this checkpoint of the same scene.
+    pub resume: Option<&'a RunCheckpoint>,
+    /// Hand out checkpoints.
+    pub checkpointing: Option<Checkpointing<'a>>,
+    /// End the run when its outcome is settled.
+    pub stop: Option<&'a mut dyn StopRule>,
+    /// Called with the fraction of the duration done, at each record (progress display).
+    pub tick: Option<&'a mut dyn FnMut(f64)>,
+}
+
 /// Run to the scene's duration, recording probes every `every_steps` and at the end.
 /// `tick(fraction)` is called at each record (for progress display).
 pub fn run(built: Built, tick: &mut dyn FnMut(f64)) -> Result<RunResult> {
-    run_with(built, None, None, tick)
+    run_with(built, Options { tick: Some(tick), ..Default::default() })
 }
 
-/// [`run`], starting from `resume` (a checkpoint of the same scene) if given, and handing
-/// checkpoints to `checkpointing` if given. A resumed run's series and summary are those of
-/// the run that never stopped, bit for bit, except the wall time and the speed, which count
-/// the resumed part only.
-pub fn run_with(
-    mut built: Built,
-    resume: Option<&RunCheckpoint>,
-    mut checkpointing: Option<Checkpointing>,
-    tick: &mut dyn FnMut(f64),
-) -> Result<RunResult> {
+/// [`run`] with [`Options`]. A resumed run's series and summary are those of the run that
+/// never stopped, bit for bit, except the wall time and the speed, which count the resumed
+/// part only.
+pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
     let m = &mut built.model;
-    let steps = (built.duration_s / m.dt_s()).ceil() as u64;
-    let record = |m: &crate::kernel::Model, values: &mut Vec<Vec<f64>>| {
-        let mut row = vec![m.time_s];
+    m.threading = opts.threading;
+    let cap = (built.duration_s / m.dt_s()).ceil() as u64;
+    let record = |m: &Model, values: &mut Vec<Vec<f64>>| {
+        let mut row = vec![m.time_s()];
         row.extend(built.probes.iter().map(|p| p.value(m)));
         values.push(row);
     };
-    let (bonds0, contacts0, mut values) = match resume {
+    let (bonds0, contacts0, mut values) = match opts.resume {
         Some(c) => {
             m.restore(&c.model)?;
             let width = built.probes.len() + 1;
-            if c.values.is_empty() || c.values.iter().any(|r| r.len() != width) || m.steps > steps {
-                return Err(bad(format!(
-                    "the series ({} rows) or the step ({} of {steps}) does not fit this scene's {width} columns",
-                    c.values.len(),
-                    m.steps
-                )));
+            if c.values.is_empty() || c.values.iter().any(|r| r.len() != width) || m.steps() > cap {
+                return Err(Error::input(
+                    "checkpoint",
+                    format!("the series ({} rows) or the step ({} of {cap}) does not fit this scene's {width} columns", c.values.len(), m.steps()),
+                ));
             }
-            (c.bonds_initial as usize, c.contacts_initial as usize, c.values.clone())
+            if let Some(stop) = opts.stop.as_deref_mut() {
+                stop.load(&c.stop)?;
+            }
+            (c.bonds_initial, c.contacts_initial, c.values.clone())
         }
         None => {
             let mut values = Vec::new();
             record(m, &mut values);
-            (m.intact_bonds(), m.contacts.len(), values)
+            (m.intact_bonds() as u64, m.state.contacts.len() as u64, values)
         }
     };
     let start = Instant::now();
-    let first_step = m.steps;
-    for s in m.steps + 1..=steps {
+    let first_step = m.steps();
+    let mut end_reason = if opts.stop.is_some() { "time_cap".to_string() } else { "duration".to_string() };
+    for s in m.steps() + 1..=cap {
         m.step()?;
-        if s % built.every_steps == 0 || s == steps {
+        let settled = match opts.stop.as_deref_mut() {
+            Some(stop) if s % stop.every_steps().max(1) == 0 => stop.check(m),
+            _ => None,
+        };
+        let last = s == cap || settled.is_some();
+        if s % built.every_steps == 0 || last {
             record(m, &mut values);
-            tick(s as f64 / steps as f64);
+            if let Some(t) = opts.tick.as_deref_mut() {
+                t(s as f64 / cap as f64);
+            }
         }
-        if let Some(c) = checkpointing.as_mut().filter(|c| c.every_steps > 0 && s % c.every_steps == 0 && s < steps) {
-            let snapshot =
-                RunCheckpoint { model: m.checkpoint(), values: values.clone(), contacts_initial: contacts0 as u64, bonds_initial: bonds0 as u64 };
+        if let Some(reason) = settled {
+            end_reason = reason;
+            break;
+        }
+        if let Some(c) = opts.checkpointing.as_mut().filter(|c| c.every_steps > 0 && s % c.every_steps == 0 && s < cap) {
+            let snapshot = RunCheckpoint {
+                model: m.checkpoint(),
+                values: values.clone(),
+                stop: opts.stop.as_deref().map_or_else(Vec::new, |r| r.save()),
+                contacts_initial: contacts0,
+                bonds_initial: bonds0,
+            };
             (c.save)(&snapshot)?;
         }
     }
@@ -152,37 +278,41 @@ pub fn run_with(
     header.extend(built.probes.iter().map(|p| p.name.clone()));
     let series = Table { header, rows: values.iter().map(|r| r.iter().map(|&v| fmt(v)).collect()).collect() };
     let info = &m.step_info;
-    let l = &m.ledger;
-    let (ke, se) = (m.el.kinetic_energy_j(), m.strain_energy_j());
-    let mut cols: Vec<(String, String)> = vec![
-        ("scene".into(), built.name.clone()),
-        ("elements".into(), m.el.len().to_string()),
-        ("contacts_initial".into(), contacts0.to_string()),
-        ("bonds_initial".into(), bonds0.to_string()),
-        ("bonds_broken".into(), l.bonds_broken.to_string()),
-        ("steps".into(), steps.to_string()),
-        ("dt_s".into(), fmt(info.dt_s)),
-        ("dt_bound_s".into(), fmt(info.dt_bound_s)),
-        ("omega_bound_rad_per_s".into(), fmt(info.omega_bound_rad_per_s)),
-        ("time_s".into(), fmt(m.time_s)),
-        ("kinetic_energy_j".into(), fmt(ke)),
-        ("strain_energy_j".into(), fmt(se)),
-        ("external_work_j".into(), fmt(l.external_j)),
-        ("dissipated_j".into(), fmt(l.dissipated_j())),
-        ("plastic_work_j".into(), fmt(l.plastic_j)),
-        ("fracture_energy_j".into(), fmt(l.fracture_j)),
-        ("energy_residual_j".into(), fmt(l.residual_j(ke, se))),
-        ("neighbour_rebuilds".into(), m.rebuilds.to_string()),
-        ("wall_s".into(), format!("{wall:.3}")),
-        ("element_steps_per_s".into(), format!("{:.4e}", m.el.len() as f64 * (steps - first_step) as f64 / wall.max(1e-9))),
-    ];
+    let l = &m.state.ledger;
+    let (ke, se) = (m.kinetic_energy_j(), m.strain_energy_j());
+    let residual = l.residual_j(ke, se);
+    let mut probes = Vec::new();
     for (k, p) in built.probes.iter().enumerate() {
         let col: Vec<f64> = values.iter().map(|r| r[k + 1]).collect();
         let (lo, hi) = col.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-        cols.push((format!("{}_final", p.name), fmt(*col.last().unwrap())));
-        cols.push((format!("{}_min", p.name), fmt(lo)));
-        cols.push((format!("{}_max", p.name), fmt(hi)));
+        probes.push((format!("{}_final", p.name), *col.last().unwrap()));
+        probes.push((format!("{}_min", p.name), lo));
+        probes.push((format!("{}_max", p.name), hi));
     }
-    let summary = Table { header: cols.iter().map(|c| c.0.clone()).collect(), rows: vec![cols.into_iter().map(|c| c.1).collect()] };
-    Ok(RunResult { name: built.name, series, summary, values })
+    let summary = RunSummary {
+        scene: built.name.clone(),
+        elements: m.el.len() as u64,
+        contacts_initial: contacts0,
+        bonds_initial: bonds0,
+        bonds_broken: l.bonds_broken(),
+        steps: m.steps(),
+        dt_s: info.dt_s,
+        dt_bound_s: info.dt_bound_s,
+        omega_bound_rad_per_s: info.omega_bound_rad_per_s,
+        simulated_s: m.time_s(),
+        end_reason,
+        kinetic_energy_j: ke,
+        strain_energy_j: se,
+        external_work_j: l.external_j,
+        mass_damping_j: l.mass_damping_j,
+        contacts: Columns(l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect()),
+        dissipated_j: l.dissipated_j(),
+        energy_residual_j: residual,
+        energy_error: residual / (l.initial_j + l.external_j.abs()).max(f64::MIN_POSITIVE),
+        neighbour_rebuilds: m.state.rebuilds,
+        wall_s: (wall * 1e3).round() / 1e3,
+        element_steps_per_s: m.el.len() as f64 * (m.steps() - first_step) as f64 / wall.max(1e-9),
+        probes: Columns(probes),
+    };
+    Ok(RunResult { name: built.name, series, summary, values, model: built.model })
 }

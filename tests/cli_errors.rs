@@ -136,7 +136,7 @@ fn nan_injected_into_the_state_names_the_element_and_the_step() {
     let mut built = scene.build().unwrap();
     let m = &mut built.model;
     m.run_steps(10).unwrap();
-    m.el.vel[37][1] = f64::NAN;
+    m.state.vel[37][1] = f64::NAN;
     match m.step() {
         Err(e @ Error::BlowUp { step: 10, element: 37, .. }) => {
             assert!(e.to_string().contains("step 10") && e.to_string().contains("element 37"), "{e}");

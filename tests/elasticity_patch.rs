@@ -54,7 +54,7 @@ fn gradient(model: &Model, set: &[usize]) -> [[f64; 2]; 2] {
     let mut rhs = [[0.0; 2]; 2];
     for &e in set {
         let (dx, dy) = (model.el.initial[e][0] - xm, model.el.initial[e][1] - ym);
-        let u = model.el.displacement_m(e);
+        let u = model.displacement_m(e);
         sxx += dx * dx;
         sxy += dx * dy;
         syy += dy * dy;
@@ -72,9 +72,9 @@ fn gradient(model: &Model, set: &[usize]) -> [[f64; 2]; 2] {
 fn virial(model: &Model, set: &[usize], cell_volume: f64) -> [[f64; 2]; 2] {
     let mut s = [[0.0; 2]; 2];
     let inset = |e: usize| set.binary_search(&e).is_ok();
-    for (c, f) in model.contacts.list.iter().zip(&model.contacts.force) {
+    for (c, f) in model.state.contacts.list.iter().zip(&model.state.contacts.force) {
         let (i, j) = (c.i as usize, c.j as usize);
-        let (pi, pj) = (model.el.pos[i], model.el.pos[j]);
+        let (pi, pj) = (model.state.pos[i], model.state.pos[j]);
         let r = [pj[0] - pi[0], pj[1] - pi[1]];
         // Force on i is f, on j is −f; branch from i is r, from j is −r: both ends add f ⊗ r.
         let w = 0.5 * (inset(i) as u8 + inset(j) as u8) as f64;

@@ -50,7 +50,7 @@ fn mesh(arrangement: Arrangement, nu: f64, plane: Plane, step: StepChoice) -> Mo
     let mut model = b.build().unwrap();
     // Excite every mode: deterministic pseudo-random velocities of 1 mm/s.
     let mut s = 0x2545F4914F6CDD1Du64;
-    for v in model.el.vel.iter_mut() {
+    for v in model.state.vel.iter_mut() {
         for c in v.iter_mut() {
             s ^= s << 13;
             s ^= s >> 7;
@@ -58,14 +58,14 @@ fn mesh(arrangement: Arrangement, nu: f64, plane: Plane, step: StepChoice) -> Mo
             *c = 1e-3 * ((s >> 11) as f64 / (1u64 << 53) as f64 - 0.5);
         }
     }
-    model.el.vel.iter_mut().zip(&model.el.radius).for_each(|(v, r)| v[2] /= r);
+    model.state.vel.iter_mut().zip(&model.el.radius).for_each(|(v, r)| v[2] /= r);
     model
 }
 
 /// Exact top frequency (dense eigen-solve) and the kernel's bound, rad/s.
 fn measured_and_bound(arrangement: Arrangement, nu: f64) -> (f64, f64, Model) {
     let model = mesh(arrangement, nu, Plane::Stress, StepChoice::Auto { safety: 0.9 });
-    let exact = stability::dense_top(&model.el, &model.contacts.list, &model.classes);
+    let exact = stability::dense_top(&model.el, &model.state.pos, &model.state.contacts, &model.classes);
     (exact, model.step_info.omega_bound_rad_per_s, model)
 }
 
@@ -78,7 +78,7 @@ fn kernel_bound_covers_the_assembled_mesh() {
         (Arrangement::Irregular, 0.2),
     ] {
         let (exact, bound, model) = measured_and_bound(arrangement, nu);
-        let lanczos = stability::lanczos_top(&model.el, &model.contacts.list, &model.classes, 120);
+        let lanczos = stability::lanczos_top(&model.el, &model.state.pos, &model.state.contacts, &model.classes, 120);
         eprintln!(
             "{arrangement:?} ν = {nu}: {} elements, measured ω_max {exact:.6e} (Lanczos {lanczos:.6e}), bound {bound:.6e} \
              (ratio {:.4}); step / instability threshold = {:.4}",
@@ -95,10 +95,10 @@ fn kernel_bound_covers_the_assembled_mesh() {
 /// H(n) = ½ v(n−½)ᵀ M v(n+½) + U(x(n)). Takes one step.
 fn shadow_energy(model: &mut Model) -> Result<f64, Error> {
     let u = model.strain_energy_j();
-    let before = model.el.vel.clone();
+    let before = model.state.vel.clone();
     model.step()?;
     let mut k = 0.0;
-    for (e, (a, b)) in before.iter().zip(&model.el.vel).enumerate() {
+    for (e, (a, b)) in before.iter().zip(&model.state.vel).enumerate() {
         k += 0.5 * model.el.mass[e] * (a[0] * b[0] + a[1] * b[1]) + 0.5 * model.el.inertia[e] * a[2] * b[2];
     }
     Ok(k + u)

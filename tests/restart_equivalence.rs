@@ -16,15 +16,15 @@ fn a_restored_run_ends_bitwise_equal_to_an_uninterrupted_one() {
     let mut first = impact::model();
     first.run_steps(n).unwrap();
     let bytes = first.checkpoint();
-    let (broken, rebuilds) = (first.ledger.bonds_broken, first.rebuilds);
+    let (broken, rebuilds) = (first.state.ledger.bonds_broken(), first.state.rebuilds);
     drop(first);
     let mut resumed = impact::model();
     resumed.restore(&bytes).unwrap();
     resumed.run_steps(more).unwrap();
 
     // The restart must fall in the middle of the action, or the test proves little.
-    assert!(broken > 100 && straight.ledger.bonds_broken > broken + 1000, "bonds broken: {broken} then {}", straight.ledger.bonds_broken);
-    assert!(straight.rebuilds > rebuilds, "no neighbour rebuild after the restart");
+    assert!(broken > 100 && straight.state.ledger.bonds_broken() > broken + 1000, "bonds broken: {broken} then {}", straight.state.ledger.bonds_broken());
+    assert!(straight.state.rebuilds > rebuilds, "no neighbour rebuild after the restart");
     assert!(impact::state_bits(&resumed) == impact::state_bits(&straight), "restored run differs from the uninterrupted one");
     // And a checkpoint of the restored state is the same bytes as one of the uninterrupted.
     assert_eq!(resumed.checkpoint(), straight.checkpoint());

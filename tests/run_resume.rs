@@ -33,7 +33,8 @@ fn killed_run(every_steps: u64, kill_at: usize) -> RunCheckpoint {
         saved.push(c.to_bytes());
         if saved.len() == kill_at { Err(Error::input("test", "killed")) } else { Ok(()) }
     };
-    let err = run::run_with(plate().build().unwrap(), None, Some(Checkpointing { every_steps, save: &mut save }), &mut |_| {});
+    let options = run::Options { checkpointing: Some(Checkpointing { every_steps, save: &mut save }), ..Default::default() };
+    let err = run::run_with(plate().build().unwrap(), options);
     assert!(err.is_err(), "the run was not interrupted");
     RunCheckpoint::from_bytes(saved.last().unwrap()).unwrap()
 }
@@ -42,12 +43,12 @@ fn killed_run(every_steps: u64, kill_at: usize) -> RunCheckpoint {
 fn a_resumed_run_writes_the_tables_of_an_uninterrupted_one() {
     let straight = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
     let checkpoint = killed_run(3000, 3);
-    let resumed = run::run_with(plate().build().unwrap(), Some(&checkpoint), None, &mut |_| {}).unwrap();
+    let resumed = run::run_with(plate().build().unwrap(), run::Options { resume: Some(&checkpoint), ..Default::default() }).unwrap();
     let broken = |r: &run::RunResult| r.column("bonds_broken").unwrap();
     let at_kill = broken(&straight)[checkpoint.values.len() - 1];
     assert!(at_kill > 0.0 && *broken(&straight).last().unwrap() > at_kill + 20.0, "the kill must fall while the crack runs");
     assert_eq!(resumed.series, straight.series);
-    assert_eq!(timeless(&resumed.summary), timeless(&straight.summary));
+    assert_eq!(timeless(&resumed.summary_table()), timeless(&straight.summary_table()));
 }
 
 #[test]

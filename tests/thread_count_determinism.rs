@@ -8,7 +8,7 @@ fn fingerprint(threads: usize, steps: u64) -> (Vec<u64>, u64, usize) {
     pool.install(|| {
         let mut m = common::impact::model();
         m.run_steps(steps).unwrap();
-        (common::impact::state_bits(&m), m.ledger.bonds_broken, m.contacts.len())
+        (common::impact::state_bits(&m), m.state.ledger.bonds_broken(), m.state.contacts.len())
     })
 }
 

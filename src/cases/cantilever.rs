@@ -17,9 +17,9 @@ use crate::analysis::{Beam, CantileverModes, Theory, sdof_natural_rad_per_s, sdo
 use crate::error::Result;
 use crate::kernel::boundary::Profile;
 use crate::lattice::Rect;
-use crate::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};
+use crate::material::{Arrangement, Material, Plane};
 use crate::run::RunResult;
-use crate::scene::{Damping, DampingPoint, FixSpec, General, LoadSpec, MaterialSpec, OutputSpec, ProbeQuantity, ProbeSpec, Scene, TimeStep};
+use crate::scene::{Damping, DampingPoint, FixSpec, General, LoadSpec, OutputSpec, ProbeQuantity, ProbeSpec, Scene, TimeStep};
 
 /// Free length, m.
 pub const LENGTH_M: f64 = 10.0;
@@ -129,19 +129,7 @@ pub fn scene(level: u32) -> Result<Scene> {
         },
         time_step: TimeStep::default(),
         damping: Damping { points: vec![DampingPoint { omega_rad_per_s: r.forcing_rad_per_s, ratio: DAMPING_RATIO }], ..Default::default() },
-        material: vec![MaterialSpec {
-            name: "beam".into(),
-            density_kg_per_m3: DENSITY_KG_PER_M3,
-            youngs_modulus_pa: MODULUS_PA,
-            poisson_ratio: POISSON,
-            tensile_strength_pa: 0.0,
-            compressive_strength_pa: 0.0,
-            fracture_toughness_pa_sqrt_m: 0.0,
-            friction_coefficient: 0.5,
-            cohesion_n_per_m: 0.0,
-            failure: FailureCriterion::None,
-            poisson_policy: PoissonPolicy::Refuse,
-        }],
+        material: vec![Material::elastic("beam", MODULUS_PA, POISSON, DENSITY_KG_PER_M3)],
         body: vec![crate::scene::BodySpec {
             name: "beam".into(),
             material: "beam".into(),

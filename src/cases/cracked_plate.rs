@@ -52,7 +52,7 @@ use crate::lattice::Rect;
 use crate::material::{Arrangement, FailureCriterion, Material, Plane, PoissonPolicy};
 use crate::run::RunResult;
 use crate::scene::{
-    BodySpec, CrackSpec, Damping, Dof, FixSpec, General, LoadSpec, MaterialSpec, OutputSpec, ProbeQuantity, ProbeSpec,
+    BodySpec, CrackSpec, Damping, Dof, FixSpec, General, LoadSpec, OutputSpec, ProbeQuantity, ProbeSpec,
     RegionSpec, Scene, TimeStep,
 };
 
@@ -220,7 +220,7 @@ pub fn scene(study: Study, level: u32, cracked: bool, setup: &Setup) -> Scene {
         time_step: TimeStep::default(),
         damping: Damping { alpha_per_s: Some(2.0 * setup.damping_ratio * omega1), relative_to_rigid_motion: true, ..Default::default() },
         material: vec![
-            MaterialSpec { name: "platen".into(), fracture_toughness_pa_sqrt_m: PLATEN_TOUGHNESS_FACTOR * TOUGHNESS_PA_SQRT_M, ..concrete(study.failure()) },
+            Material { name: "platen".into(), fracture_toughness_pa_sqrt_m: PLATEN_TOUGHNESS_FACTOR * TOUGHNESS_PA_SQRT_M, ..concrete(study.failure()) },
             concrete(study.failure()),
         ],
         body: vec![BodySpec {
@@ -263,8 +263,8 @@ pub fn scene(study: Study, level: u32, cracked: bool, setup: &Setup) -> Scene {
 }
 
 /// The seed's concrete (§4–5) with the given failure criterion, as a scene material.
-pub fn concrete(failure: FailureCriterion) -> MaterialSpec {
-    MaterialSpec {
+pub fn concrete(failure: FailureCriterion) -> Material {
+    Material {
         name: "concrete".into(),
         density_kg_per_m3: DENSITY_KG_PER_M3,
         youngs_modulus_pa: MODULUS_PA,
@@ -276,12 +276,14 @@ pub fn concrete(failure: FailureCriterion) -> MaterialSpec {
         cohesion_n_per_m: 0.0,
         failure,
         poisson_policy: PoissonPolicy::Refuse,
+        rate: None,
+        compaction: None,
     }
 }
 
-/// The same as a kernel material (what the kernel tests build models from).
+/// The same (what the kernel tests build models from).
 pub fn material(failure: FailureCriterion) -> Material {
-    concrete(failure).to_material()
+    concrete(failure)
 }
 
 /// The width over which the lattice carries a uniaxial load, m: the span of the bonds that a
@@ -330,7 +332,7 @@ pub fn run(study: Study, level: u32, cracked: bool, setup: &Setup) -> Result<(Pe
     let result = crate::run::run(built, &mut |_| {})?;
     let f = peak_force_n(&result);
     let broken = result.column("bonds_broken").and_then(|b| b.last().copied()).unwrap_or(0.0) as u64;
-    let steps = result.summary.rows[0][result.summary.column("steps").expect("steps")].parse().unwrap_or(0);
+    let steps = result.summary.steps;
     let peak = Peak {
         stress_pa: f / (net_width_m(study, level) * THICKNESS_M),
         nominal_stress_pa: f / (WIDTH_M * THICKNESS_M),

@@ -30,8 +30,7 @@ pub struct Level {
 impl Level {
     /// From a finished run and its figure.
     pub fn from_run(level: u32, elements: usize, value: f64, result: &RunResult, wall_s: f64) -> Level {
-        let get = |name: &str| result.summary.rows[0][result.summary.column(name).expect("summary column")].clone();
-        Level { level, elements, steps: get("steps").parse().unwrap_or(0), dt_s: get("dt_s").parse().unwrap_or(0.0), value, wall_s }
+        Level { level, elements, steps: result.summary.steps, dt_s: result.summary.dt_s, value, wall_s }
     }
 }
 

@@ -50,7 +50,7 @@ pub fn run(args: Args) -> Result<()> {
         "{}: {} elements, {} contacts, Δt = {:.4e} s ({}), {} steps",
         built.name,
         built.model.el.len(),
-        built.model.contacts.len(),
+        built.model.state.contacts.len(),
         info.dt_s,
         info.detail,
         (built.duration_s / info.dt_s).ceil()
@@ -59,17 +59,18 @@ pub fn run(args: Args) -> Result<()> {
     let mut save = |c: &RunCheckpoint| crate::table::write_atomic(&checkpoint_path, &c.to_bytes());
     let every_steps = args.checkpoint_every_steps;
     let checkpointing = (every_steps > 0).then_some(Checkpointing { every_steps, save: &mut save });
-    let result = crate::run::run_with(built, resume.as_ref(), checkpointing, &mut |f| bar.set_position((f * 1000.0) as u64))
-        .map_err(|e| e.in_file(&checkpoint_path));
+    let mut tick = |f: f64| bar.set_position((f * 1000.0) as u64);
+    let options = crate::run::Options { resume: resume.as_ref(), checkpointing, tick: Some(&mut tick), ..Default::default() };
+    let result = crate::run::run_with(built, options).map_err(|e| e.in_file(&checkpoint_path));
     bar.finish_and_clear();
     let result = result?;
-    result.summary.write_csv(&dir.join("summary.csv"))?;
+    let summary = result.summary_table();
+    summary.write_csv(&dir.join("summary.csv"))?;
     result.series.write_csv(&dir.join("series.csv"))?;
     if checkpoint_path.exists() {
         std::fs::remove_file(&checkpoint_path).map_err(|e| Error::io(&checkpoint_path, e))?;
     }
-    let row = &result.summary.rows[0];
-    for (h, v) in result.summary.header.iter().zip(row) {
+    for (h, v) in summary.header.iter().zip(&summary.rows[0]) {
         println!("{h:>28} = {v}");
     }
     println!("{:>28} = {}", "written", dir.display());

@@ -31,7 +31,7 @@ impl Profile {
 }
 
 /// A group of kinematic elements moving with a prescribed velocity (zero: fixed support).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Deserialize, serde::Serialize)]
 pub struct MotionGroup {
     /// Name, for outputs.
     pub name: String,
@@ -56,7 +56,7 @@ impl MotionGroup {
 }
 
 /// An external force on a group of free elements, shared equally among them.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Deserialize, serde::Serialize)]
 pub struct LoadGroup {
     /// Name, for outputs.
     pub name: String,

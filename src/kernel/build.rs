@@ -6,13 +6,13 @@ use std::ops::Range;
 use super::boundary::{LoadGroup, MotionGroup};
 use super::contacts::{Contact, Contacts};
 use super::integrate::MotionParams;
-use super::law::ContactClass;
+use super::law::{self, ContactClass, Extra, Parts};
 use super::stability;
-use super::state::Elements;
-use super::{Model, StepInfo};
+use super::state::{Elements, State};
+use super::{Body, Model, StepInfo, Threading, neighbours};
 use crate::error::{Error, Result};
 use crate::lattice::{Lattice, Rect};
-use crate::material::{Arrangement, Material, Plane, Strength};
+use crate::material::{Arrangement, Material, Plane};
 
 /// How the time step is chosen.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -35,17 +35,11 @@ pub enum StepChoice {
 }
 
 #[derive(Debug, Clone, Copy, PartialEq)]
-struct Kind {
+pub(crate) struct Kind {
     material: usize,
     arrangement: Arrangement,
     radius_m: f64,
     mass_kg: f64,
-}
-
-#[derive(Debug, Clone)]
-struct Body {
-    name: String,
-    elements: Range<usize>,
 }
 
 /// Assembles a [`Model`].
@@ -74,6 +68,7 @@ pub struct ModelBuilder {
     materials: Vec<Material>,
     kinds: Vec<Kind>,
     el: Elements,
+    pos: Vec<[f64; 3]>,
     bonds: Vec<(u32, u32)>,
     bodies: Vec<Body>,
     motions: Vec<MotionGroup>,
@@ -97,6 +92,7 @@ impl ModelBuilder {
             materials: Vec::new(),
             kinds: Vec::new(),
             el: Elements::default(),
+            pos: Vec::new(),
             bonds: Vec::new(),
             bodies: Vec::new(),
             motions: Vec::new(),
@@ -113,6 +109,17 @@ impl ModelBuilder {
     /// The elements so far (to select regions for boundary groups).
     pub fn elements(&self) -> &Elements {
         &self.el
+    }
+
+    /// Their initial centres [x m, y m].
+    pub fn centres(&self) -> &[[f64; 2]] {
+        &self.el.initial
+    }
+
+    /// Set element `e`'s initial velocity [vx m/s, vy m/s, ω rad/s] (before the model is built,
+    /// so that the integrator is primed with it).
+    pub fn set_velocity(&mut self, e: usize, velocity: [f64; 3]) {
+        self.el.initial_velocity[e] = velocity;
     }
 
     fn kind(&mut self, material: usize, arrangement: Arrangement, radius_m: f64, area_m2: f64) -> u16 {
@@ -146,8 +153,8 @@ impl ModelBuilder {
             let mat = overrides.iter().find(|(rect, _)| rect.contains(c[0], c[1])).map_or(material, |o| o.1);
             let kind = self.kind(mat, arrangement, r, lattice.area_per_element_m2);
             let m = self.kinds[kind as usize].mass_kg;
-            self.el.push(c[0], c[1], r, m, 0.5 * m * r * r, kind, body);
-            *self.el.vel.last_mut().unwrap() = velocity;
+            self.el.push(*c, velocity, r, m, 0.5 * m * r * r, kind, body);
+            self.pos.push([c[0], c[1], 0.0]);
         }
         self.bonds.extend(lattice.bonds.iter().map(|&(i, j)| (i + first as u32, j + first as u32)));
         self.bodies.push(Body { name: name.to_string(), elements: first..self.el.len() });
@@ -169,7 +176,7 @@ impl ModelBuilder {
     /// pre-existing crack; the pairs become frictional contacts). Returns how many.
     pub fn cut(&mut self, a: [f64; 2], b: [f64; 2]) -> usize {
         let cross = |o: [f64; 2], p: [f64; 2], q: [f64; 2]| (p[0] - o[0]) * (q[1] - o[1]) - (p[1] - o[1]) * (q[0] - o[0]);
-        let pos = &self.el.pos;
+        let pos = &self.el.initial;
         let before = self.bonds.len();
         self.bonds.retain(|&(i, j)| {
             let (p, q) = ([pos[i as usize][0], pos[i as usize][1]], [pos[j as usize][0], pos[j as usize][1]]);
@@ -188,7 +195,7 @@ impl ModelBuilder {
             self.el.set_kinematic(e, g, mask);
             for d in 0..3 {
                 if mask & (1 << d) != 0 {
-                    self.el.vel[e][d] = 0.0;
+                    self.el.initial_velocity[e][d] = 0.0;
                 }
             }
         }
@@ -207,35 +214,6 @@ impl ModelBuilder {
         g
     }
 
-    fn class(&self, a: &Kind, b: &Kind) -> Result<ContactClass> {
-        let (ma, mb) = (&self.materials[a.material], &self.materials[b.material]);
-        let t = self.thickness_m;
-        let (sa, sb) = (ma.stiffness(self.plane, a.arrangement, t)?, mb.stiffness(self.plane, b.arrangement, t)?);
-        // Two half-springs in series, each belonging to its element's material: equal
-        // materials give the material's own stiffness.
-        let series = |x: f64, y: f64| if x + y > 0.0 { 2.0 * x * y / (x + y) } else { 0.0 };
-        let (kn, kt) = (series(sa.kn_n_per_m, sb.kn_n_per_m), series(sa.kt_n_per_m, sb.kt_n_per_m));
-        let r = 0.5 * (a.radius_m + b.radius_m);
-        let (qa, qb) = (ma.strength(self.plane, a.arrangement, r, t)?, mb.strength(self.plane, b.arrangement, r, t)?);
-        let strength = Strength {
-            normal_force_n: qa.normal_force_n.min(qb.normal_force_n),
-            shear_force_n: qa.shear_force_n.min(qb.shear_force_n),
-            plastic_opening_at_break_m: qa.plastic_opening_at_break_m.min(qb.plastic_opening_at_break_m),
-        };
-        let sum = a.radius_m + b.radius_m;
-        Ok(ContactClass {
-            kn_n_per_m: kn,
-            kt_n_per_m: kt,
-            strength,
-            friction: 0.5 * (ma.friction_coefficient + mb.friction_coefficient),
-            cohesion_n: ma.cohesion_n_per_m.min(mb.cohesion_n_per_m) * t,
-            lever_i: a.radius_m / sum,
-            lever_j: b.radius_m / sum,
-            dashpot_n_s_per_m: self.beta_s * kn,
-            dashpot_t_s_per_m: self.beta_s * kt,
-        })
-    }
-
     /// Validate, assemble contacts and classes, choose the time step.
     pub fn build(self) -> Result<Model> {
         if !(self.thickness_m.is_finite() && self.thickness_m > 0.0) {
@@ -248,22 +226,28 @@ impl ModelBuilder {
             m.validate(&format!("material.{}", if m.name.is_empty() { k.to_string() } else { m.name.clone() }))?;
         }
         let nk = self.kinds.len();
-        let mut classes = Vec::with_capacity(nk * nk);
-        for a in &self.kinds {
-            for b in &self.kinds {
-                classes.push(self.class(a, b)?);
-            }
-        }
         if nk * nk > u16::MAX as usize {
             return Err(Error::input("material", format!("{nk} element kinds (material × radius) give too many contact classes")));
         }
         let el = self.el;
+        let initial_speed = el.initial_velocity.iter().map(|v| v[0].hypot(v[1])).fold(0.0, f64::max);
+        let driven = self.motions.iter().map(|g| g.velocity[0].hypot(g.velocity[1])).fold(0.0, f64::max);
+        let ctx = law::Context { plane: self.plane, thickness_m: self.thickness_m, beta_s: self.beta_s, max_speed_mps: initial_speed.max(driven) };
+        let side = |k: &Kind| law::Side { material: &self.materials[k.material], arrangement: k.arrangement, radius_m: k.radius_m };
+        let mut classes = Vec::with_capacity(nk * nk);
+        for a in &self.kinds {
+            for b in &self.kinds {
+                classes.push(ContactClass::between(side(a), side(b), &ctx)?);
+            }
+        }
+        let parts = Parts::resolve(&classes, self.beta_s);
+        let pos = self.pos;
         let mut list: Vec<Contact> = self
             .bonds
             .iter()
             .filter(|&&(i, j)| el.can_interact(i as usize, j as usize))
             .map(|&(i, j)| {
-                let (pi, pj) = (el.pos[i as usize], el.pos[j as usize]);
+                let (pi, pj) = (pos[i as usize], pos[j as usize]);
                 let d0 = ((pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2)).sqrt();
                 let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
                 Contact::bonded(i, j, super::class_index(a, b, nk), d0)
@@ -271,10 +255,12 @@ impl ModelBuilder {
             .collect();
         list.sort_by_key(|c| (c.i, c.j));
         list.dedup_by_key(|c| (c.i, c.j));
-        let contacts = Contacts::from_list(list);
+        let extra = if parts.needs_extra() { list.iter().map(|c| Extra::new(c.rest_m)).collect() } else { Vec::new() };
+        let contacts = Contacts::from_list(list, extra);
 
         let r_min = el.radius.iter().copied().fold(f64::INFINITY, f64::min);
-        let (mut omega, mut how) = frequency_bound(&el, &contacts.list, &classes, &self.kinds, &self.bodies, nk);
+        let r_max = el.radius.iter().copied().fold(0.0, f64::max);
+        let (mut omega, mut how) = frequency_bound(&el, &pos, &contacts.list, &classes, &self.kinds, &self.bodies, nk);
         // A servo grip adds the rank-one stiffness (k/n²) 1 1ᵀ on its members: by Weyl's
         // inequality it raises ω_max² by at most k / (group mass); groups are disjoint.
         let servo = self
@@ -318,42 +304,40 @@ impl ModelBuilder {
                 detail = format!("{n} steps per binary collision ({t_c:.4e} s)");
             }
         }
+        for k in &mut classes {
+            k.set_time_step(dt);
+        }
         let speed_limit = self.speed_limit_mps.unwrap_or_else(|| {
             let wave = self
                 .materials
                 .iter()
                 .map(|m| (m.effective(self.plane).modulus_pa / m.density_kg_per_m3).sqrt())
                 .fold(0.0, f64::max);
-            let initial = el.vel.iter().map(|v| v[0].hypot(v[1])).fold(0.0, f64::max);
-            let driven = self.motions.iter().map(|g| g.velocity[0].hypot(g.velocity[1])).fold(0.0, f64::max);
-            10.0 * wave.max(initial).max(driven)
+            10.0 * wave.max(initial_speed).max(driven)
         });
-        let mut model = Model {
-            rebuild_pos: el.pos.iter().map(|p| [p[0], p[1]]).collect(),
-            el,
+        let n = el.len();
+        let state = State {
+            vel: el.initial_velocity.clone(),
+            force: vec![[0.0; 3]; n],
+            rebuild_pos: pos.iter().map(|p| [p[0], p[1]]).collect(),
+            pos,
             contacts,
+            margin_m: Vec::new(),
+            ledger: Default::default(),
+            steps: 0,
+            rebuilds: 0,
+        };
+        let mut model = Model {
+            el,
             classes,
+            parts,
             kinds: nk,
+            bodies: self.bodies,
             motions: self.motions,
             loads: self.loads,
             motion: MotionParams { dt_s: dt, alpha_per_s: self.alpha_per_s, gravity_mps2: self.gravity_mps2, speed_limit_mps: speed_limit },
-            damped: self.beta_s > 0.0,
-            skin_m: self.skin_ratio * r_min,
-            broad: Default::default(),
-            pairs: Vec::new(),
-            diss_partial: Vec::new(),
-            motion_partial: Vec::new(),
-            load_now: Vec::new(),
-            motion_now: Vec::new(),
-            frame_now: Vec::new(),
-            frame_scratch: Vec::new(),
-            contact_sums: Vec::new(),
+            neighbours: neighbours::Settings::new(self.skin_ratio, r_min, r_max),
             damp_relative_to_rigid: self.damp_relative_to_rigid,
-            bodies: self.bodies.len(),
-            ledger: Default::default(),
-            time_s: 0.0,
-            steps: 0,
-            rebuilds: 0,
             step_info: StepInfo {
                 omega_bound_rad_per_s: omega,
                 xi_at_bound: xi,
@@ -362,12 +346,15 @@ impl ModelBuilder {
                 dt_s: dt,
                 detail: format!("{detail}; ω_max bound by {how}"),
             },
+            threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
+            state,
+            scratch: Default::default(),
         };
         model.rebuild_neighbours();
-        model.rebuilds = 0;
+        model.state.rebuilds = 0;
         model.prime();
-        model.ledger.initial_j = model.el.kinetic_energy_j() + model.strain_energy_j();
+        model.state.ledger.initial_j = model.kinetic_energy_j() + model.strain_energy_j();
         Ok(model)
     }
 }
@@ -377,7 +364,7 @@ fn collision_time_s(classes: &[ContactClass], kinds: &[Kind], nk: usize) -> f64 
     let mut t = f64::INFINITY;
     for (a, ka) in kinds.iter().enumerate() {
         for (b, kb) in kinds.iter().enumerate() {
-            let kn = classes[a * nk + b].kn_n_per_m;
+            let kn = classes[a * nk + b].contact.springs.kn_n_per_m;
             t = t.min(std::f64::consts::PI / (kn * (1.0 / ka.mass_kg + 1.0 / kb.mass_kg)).sqrt());
         }
     }
@@ -391,6 +378,7 @@ fn collision_time_s(classes: &[ContactClass], kinds: &[Kind], nk: usize) -> f64 
 /// network.
 fn frequency_bound(
     el: &Elements,
+    pos: &[[f64; 3]],
     list: &[Contact],
     classes: &[ContactClass],
     kinds: &[Kind],
@@ -413,7 +401,10 @@ fn frequency_bound(
             let (a, z) = (&kinds[k], &kinds[k0]);
             a.arrangement == z.arrangement && a.radius_m == z.radius_m && a.mass_kg == z.mass_kg
         };
-        let springs = |a: usize, b: usize| (classes[a * nk + b].kn_n_per_m, classes[a * nk + b].kt_n_per_m);
+        let springs = |a: usize, b: usize| {
+            let s = classes[a * nk + b].stiffest_bond();
+            (s.kn_n_per_m, s.kt_n_per_m)
+        };
         let regular = kinds[k0].arrangement != Arrangement::Irregular
             && body_kinds.iter().all(|&k| same(k as usize))
             && body_kinds.iter().all(|&a| body_kinds.iter().all(|&c| springs(a as usize, c as usize) == springs(k0, k0)));
@@ -422,7 +413,7 @@ fn frequency_bound(
             let mut how = String::new();
             for &k in &body_kinds {
                 let kind = &kinds[k as usize];
-                let c = &classes[k as usize * nk + k as usize];
+                let c = classes[k as usize * nk + k as usize].stiffest_bond();
                 let arrangement = if has_bonds { kind.arrangement } else { Arrangement::ClosePacked };
                 let coef = stability::lattice_coefficient(arrangement, c.kt_n_per_m / c.kn_n_per_m, 0.5);
                 let wk = coef * (c.kn_n_per_m / kind.mass_kg).sqrt();
@@ -435,7 +426,7 @@ fn frequency_bound(
         } else {
             let mask: Vec<Contact> =
                 list.iter().copied().filter(|c| b.elements.contains(&(c.i as usize)) || b.elements.contains(&(c.j as usize))).collect();
-            let (w, s) = stability::gershgorin(el, &mask, classes);
+            let (w, s) = stability::gershgorin(el, pos, &mask, classes);
             (w, format!("Gershgorin, rotation scale {s:.3} (body {})", b.name))
         };
         if omega > best.0 {

@@ -2,66 +2,82 @@
 //!
 //!   kinetic + strain = initial (kinetic + strain) + external work − dissipated
 //!
-//! closes to O(Δt²) (central differences carry velocities at half steps); `Ledger::residual_j`
-//! is what a test or a run summary checks.
+//! closes to O(Δt) (central differences carry velocities at half steps); `Ledger::residual_j`
+//! is what a test or a run summary checks. The contacts' mechanisms are listed once, in
+//! `law::Dissipation`.
 
-use super::contacts::{Bond, Contact};
+use serde::{Deserialize, Serialize};
+
+use super::contacts::Contacts;
 use super::forces;
-use super::law::{self, ContactClass, Dissipation};
+use super::law::{self, ContactClass, Dissipation, Extra, Parts, PartSet, PartsVisitor};
 use super::state::Elements;
 
 /// Accumulated work and dissipation since the start of the run, J.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
 pub struct Ledger {
+    /// Kinetic + strain energy at the start, J.
+    pub initial_j: f64,
     /// Work of loads, gravity and prescribed motions on the model, J.
     pub external_j: f64,
     /// Mass-proportional Rayleigh damping, J.
     pub mass_damping_j: f64,
-    /// Contact dashpots (stiffness-proportional Rayleigh damping), J.
-    pub contact_damping_j: f64,
-    /// Coulomb sliding, J.
-    pub friction_j: f64,
-    /// Plastic work on bond plateaus, J.
-    pub plastic_j: f64,
-    /// Elastic energy released by breaking bonds, J.
-    pub fracture_j: f64,
-    /// Bonds broken.
-    pub bonds_broken: u64,
-    /// Kinetic + strain energy at the start, J.
-    pub initial_j: f64,
+    /// What the contacts dissipated, by mechanism, and the bonds broken.
+    pub contacts: Dissipation,
 }
 
 impl Ledger {
     /// Everything dissipated, J.
     pub fn dissipated_j(&self) -> f64 {
-        self.mass_damping_j + self.contact_damping_j + self.friction_j + self.plastic_j + self.fracture_j
+        self.mass_damping_j + self.contacts.total_j()
     }
 
     /// Balance error given the present kinetic and strain energy, J (0 for a perfect ledger).
     pub fn residual_j(&self, kinetic_j: f64, strain_j: f64) -> f64 {
         kinetic_j + strain_j - (self.initial_j + self.external_j - self.dissipated_j())
     }
+
+    /// Bonds broken so far.
+    pub fn bonds_broken(&self) -> u64 {
+        self.contacts.broken
+    }
 }
 
-/// Elastic energy stored in the contacts' springs at the current positions, J.
-///
-/// The tangential springs' history lags the positions by one step (this step's slip is added
-/// when the contacts are processed), so the energy is taken from the state the next contact
-/// processing would produce: each contact is evaluated on a copy with the law itself.
-pub fn strain_energy_j(el: &Elements, list: &[Contact], classes: &[ContactClass], dt_s: f64) -> f64 {
-    let mut sum = 0.0;
-    let mut scratch = Dissipation::default();
-    for c in list {
-        let k = &classes[c.class as usize];
-        let Some(g) = forces::kinematics(el, c, k) else { continue };
-        let mut probe = *c;
-        law::interact::<false>(&mut probe, k, &g, dt_s, &mut scratch);
-        let stretch = match probe.bond {
-            Bond::Intact => g.d_m - probe.d0 - probe.dp,
-            Bond::Frictional if g.d_m < probe.d0 => g.d_m - probe.d0,
-            Bond::Frictional => continue,
-        };
-        sum += 0.5 * k.kn_n_per_m * stretch * stretch + 0.5 * k.kt_n_per_m * probe.ut * probe.ut;
+struct Strain<'a> {
+    el: &'a Elements,
+    pos: &'a [[f64; 3]],
+    vel: &'a [[f64; 3]],
+    contacts: &'a Contacts,
+    classes: &'a [ContactClass],
+    dt_s: f64,
+}
+
+impl PartsVisitor for Strain<'_> {
+    type Output = f64;
+    fn visit<P: PartSet>(self) -> f64 {
+        let _ = self.el;
+        let mut sum = 0.0;
+        let scratch = Extra::new(0.0);
+        for (k, c) in self.contacts.list.iter().enumerate() {
+            let class = &self.classes[c.class as usize];
+            let Ok(g) = forces::kinematics(self.pos, self.vel, c, class) else { continue };
+            let x = if P::EXTRA { &self.contacts.extra[k] } else { &scratch };
+            sum += law::stored_energy_j::<P>(c, x, class, &g, self.dt_s);
+        }
+        sum
     }
-    sum
+}
+
+/// Elastic energy stored in the contacts' springs at the current positions, J (the state the
+/// next contact processing would produce; see `law::stored_energy_j`).
+pub fn strain_energy_j(
+    el: &Elements,
+    pos: &[[f64; 3]],
+    vel: &[[f64; 3]],
+    contacts: &Contacts,
+    classes: &[ContactClass],
+    parts: Parts,
+    dt_s: f64,
+) -> f64 {
+    parts.dispatch(Strain { el, pos, vel, contacts, classes, dt_s })
 }

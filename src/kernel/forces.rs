@@ -7,63 +7,117 @@
 //! which spares the motion stage its gather. The scatter visits an element's contacts in
 //! increasing contact order, the same order as the gather's adjacency, from the same zero: the
 //! sums are bitwise the same either way.
+//!
+//! The loop is compiled once per set of optional law parts (`law::PartSet`).
 
 use rayon::prelude::*;
 
 use super::contacts::{Bond, Contact, ContactForce};
-use super::law::{self, ContactClass, Dissipation, Kinematics};
-use super::state::Elements;
+use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
 /// Contacts per chunk: fixed, so partial sums do not depend on the number of threads.
 pub const CHUNK: usize = 2048;
 
-/// Compute all contact forces. `partial` must hold one entry per chunk. With `sums` (one
-/// thread), each force is also added to its elements' sums [Fx N, Fy N, T N·m], which must
-/// come in zeroed.
+/// What stage 1 reads and writes.
+pub struct Stage<'a> {
+    /// Positions [x m, y m, θ rad].
+    pub pos: &'a [[f64; 3]],
+    /// Half-step velocities.
+    pub vel: &'a [[f64; 3]],
+    /// Contacts.
+    pub list: &'a mut [Contact],
+    /// Their extra slots (empty unless the parts need them).
+    pub extra: &'a mut [Extra],
+    /// Their forces (output).
+    pub force: &'a mut [ContactForce],
+    /// Contact classes.
+    pub classes: &'a [ContactClass],
+    /// Δt, s.
+    pub dt_s: f64,
+    /// One entry per chunk (output).
+    pub partial: &'a mut [Dissipation],
+    /// With one thread: per-element force sums [Fx N, Fy N, T N·m], zeroed on entry.
+    pub sums: Option<&'a mut [[f64; 3]]>,
+}
+
+impl law::PartsVisitor for Stage<'_> {
+    type Output = ();
+    fn visit<P: PartSet>(self) {
+        process::<P>(self)
+    }
+}
+
+/// One chunk: each contact's force into `fs`, its dissipation into `d`, and `sink` told of each.
+#[inline(always)]
 #[allow(clippy::too_many_arguments)]
-pub fn process<const DAMP: bool>(
-    el: &Elements,
-    list: &mut [Contact],
-    force: &mut [ContactForce],
+fn chunk<P: PartSet>(
+    pos: &[[f64; 3]],
+    vel: &[[f64; 3]],
+    cs: &mut [Contact],
+    xs: &mut [Extra],
+    fs: &mut [ContactForce],
     classes: &[ContactClass],
     dt_s: f64,
-    partial: &mut [Dissipation],
-    sums: Option<&mut [[f64; 3]]>,
+    d: &mut Dissipation,
+    mut sink: impl FnMut(&Contact, &ContactForce),
 ) {
+    *d = Dissipation::default();
+    if P::EXTRA {
+        for ((c, x), f) in cs.iter_mut().zip(xs.iter_mut()).zip(fs.iter_mut()) {
+            *f = one::<P>(pos, vel, c, x, classes, dt_s, d);
+            sink(c, f);
+        }
+    } else {
+        let mut scratch = Extra::new(0.0);
+        for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
+            *f = one::<P>(pos, vel, c, &mut scratch, classes, dt_s, d);
+            sink(c, f);
+        }
+    }
+}
+
+/// Compute all contact forces.
+pub fn process<P: PartSet>(s: Stage<'_>) {
+    let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums } = s;
     match sums {
         None => {
-            let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation)| {
-                *d = Dissipation::default();
-                for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
-                    *f = one::<DAMP>(el, c, classes, dt_s, d);
-                }
+            let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
+                chunk::<P>(pos, vel, cs, xs, fs, classes, dt_s, d, |_, _| {})
             };
-            list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut()).for_each(run);
+            let chunks = list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut());
+            if P::EXTRA {
+                chunks.zip(extra.par_chunks_mut(CHUNK)).for_each(|(a, xs)| run(a, xs));
+            } else {
+                chunks.for_each(|a| run(a, &mut []));
+            }
         }
         Some(sums) => {
             // Contacts are sorted by i: keep i's running sum in registers while i repeats.
             let mut run_i = u32::MAX;
             let mut acc = [0.0f64; 3];
-            for ((cs, fs), d) in list.chunks_mut(CHUNK).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()) {
-                *d = Dissipation::default();
-                for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
-                    let cf = one::<DAMP>(el, c, classes, dt_s, d);
-                    *f = cf;
-                    if c.i != run_i {
-                        if run_i != u32::MAX {
-                            sums[run_i as usize] = acc;
-                        }
-                        run_i = c.i;
-                        acc = sums[run_i as usize];
+            let mut sink = |c: &Contact, cf: &ContactForce| {
+                if c.i != run_i {
+                    if run_i != u32::MAX {
+                        sums[run_i as usize] = acc;
                     }
-                    acc[0] += cf.fx;
-                    acc[1] += cf.fy;
-                    acc[2] += cf.ti;
-                    let s = &mut sums[c.j as usize];
-                    s[0] -= cf.fx;
-                    s[1] -= cf.fy;
-                    s[2] += cf.tj;
+                    run_i = c.i;
+                    acc = sums[run_i as usize];
                 }
+                acc[0] += cf.fx;
+                acc[1] += cf.fy;
+                acc[2] += cf.ti;
+                let s = &mut sums[c.j as usize];
+                s[0] -= cf.fx;
+                s[1] -= cf.fy;
+                s[2] += cf.tj;
+            };
+            let n = list.len();
+            let mut from = 0;
+            for d in partial.iter_mut() {
+                let to = (from + CHUNK).min(n);
+                let xs: &mut [Extra] = if P::EXTRA { &mut extra[from..to] } else { &mut [] };
+                chunk::<P>(pos, vel, &mut list[from..to], xs, &mut force[from..to], classes, dt_s, d, &mut sink);
+                from = to;
             }
             if run_i != u32::MAX {
                 sums[run_i as usize] = acc;
@@ -73,39 +127,43 @@ pub fn process<const DAMP: bool>(
 }
 
 #[inline(always)]
-fn one<const DAMP: bool>(el: &Elements, c: &mut Contact, classes: &[ContactClass], dt_s: f64, d: &mut Dissipation) -> ContactForce {
+fn one<P: PartSet>(
+    pos: &[[f64; 3]],
+    vel: &[[f64; 3]],
+    c: &mut Contact,
+    x: &mut Extra,
+    classes: &[ContactClass],
+    dt_s: f64,
+    d: &mut Dissipation,
+) -> ContactForce {
     let k = &classes[c.class as usize];
-    match kinematics(el, c, k) {
-        Some(g) => law::interact::<DAMP>(c, k, &g, dt_s, d),
-        None => {
-            // Separation releases what the shear spring still held.
-            if c.ut != 0.0 {
-                d.friction_j += 0.5 * k.kt_n_per_m * c.ut * c.ut;
-                c.ut = 0.0;
-            }
+    match kinematics(pos, vel, c, k) {
+        Ok(g) => law::interact::<P>(c, x, k, &g, dt_s, d),
+        Err(d2) => {
+            law::friction::apart(c, k, d2, d);
             ContactForce::default()
         }
     }
 }
 
-/// Geometry and relative velocity of a contact at the current state, or None for a
-/// frictional pair that does not touch.
+/// Geometry and relative velocity of a contact at the current state, or, for a frictional pair
+/// that does not touch, Err(its squared distance, m²).
 #[inline(always)]
-pub fn kinematics(el: &Elements, c: &Contact, k: &ContactClass) -> Option<Kinematics> {
+pub fn kinematics(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass) -> Result<Kinematics, f64> {
     let (i, j) = (c.i as usize, c.j as usize);
-    let (pi, pj) = (el.pos[i], el.pos[j]);
+    let (pi, pj) = (pos[i], pos[j]);
     let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
     let d2 = dx * dx + dy * dy;
-    if c.bond == Bond::Frictional && d2 >= c.d0 * c.d0 {
-        return None;
+    if c.bond == Bond::Frictional && d2 >= c.rest_m * c.rest_m {
+        return Err(d2);
     }
     let dist = d2.sqrt();
     let inv = 1.0 / dist;
     let (nx, ny) = (dx * inv, dy * inv);
-    let (vi, vj) = (el.vel[i], el.vel[j]);
+    let (vi, vj) = (vel[i], vel[j]);
     let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
     let (li, lj) = (dist * k.lever_i, dist * k.lever_j);
-    Some(Kinematics {
+    Ok(Kinematics {
         d_m: dist,
         nx,
         ny,

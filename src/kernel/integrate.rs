@@ -19,7 +19,7 @@ use super::state::Elements;
 pub const CHUNK: usize = 1024;
 
 /// Parameters of the motion stage.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct MotionParams {
     /// Time step Δt, s.
     pub dt_s: f64,
@@ -38,15 +38,15 @@ pub struct MotionReport {
     pub mass_damping_j: f64,
     /// Work of loads, gravity and prescribed motions on the model, J.
     pub external_j: f64,
-    /// Largest squared displacement since the last neighbour rebuild, m².
-    pub max_drift2_m2: f64,
+    /// Some element drifted further than its neighbour margin since the last rebuild.
+    pub drifted: bool,
     /// First element whose state is non-finite or too fast (usize::MAX: none).
     pub first_bad: usize,
 }
 
 impl Default for MotionReport {
     fn default() -> Self {
-        MotionReport { mass_damping_j: 0.0, external_j: 0.0, max_drift2_m2: 0.0, first_bad: usize::MAX }
+        MotionReport { mass_damping_j: 0.0, external_j: 0.0, drifted: false, first_bad: usize::MAX }
     }
 }
 
@@ -55,7 +55,7 @@ impl MotionReport {
     pub fn merge(&mut self, o: &MotionReport) {
         self.mass_damping_j += o.mass_damping_j;
         self.external_j += o.external_j;
-        self.max_drift2_m2 = self.max_drift2_m2.max(o.max_drift2_m2);
+        self.drifted |= o.drifted;
         self.first_bad = self.first_bad.min(o.first_bad);
     }
 }
@@ -76,7 +76,7 @@ pub struct Drive<'a> {
 /// Rigid-body velocity of each body from its free elements' momenta: V = P/M and
 /// Ω = L/J about the centre of mass, written to `out` ([Vx, Vy, Ω, cx, cy] per body).
 /// `acc` is scratch space (reused between calls: no allocation in the step loop).
-pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: &mut Vec<[f64; 5]>) {
+pub fn rigid_frames(el: &Elements, pos: &[[f64; 3]], vel: &[[f64; 3]], bodies: usize, out: &mut Vec<[f64; 5]>, acc: &mut Vec<[f64; 5]>) {
     // Per body: M, Mx, My, Px, Py; then L, J in the first two slots.
     acc.clear();
     acc.resize(bodies, [0.0; 5]);
@@ -85,7 +85,7 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: 
             continue;
         }
         let (m, b) = (el.mass[e], el.body[e] as usize);
-        let (p, v) = (el.pos[e], el.vel[e]);
+        let (p, v) = (pos[e], vel[e]);
         let a = &mut acc[b];
         a[0] += m;
         a[1] += m * p[0];
@@ -102,7 +102,7 @@ pub fn rigid_frames(el: &Elements, bodies: usize, out: &mut Vec<[f64; 5]>, acc: 
         }
         let b = el.body[e] as usize;
         let f = out[b];
-        let (p, v) = (el.pos[e], el.vel[e]);
+        let (p, v) = (pos[e], vel[e]);
         let (rx, ry) = (p[0] - f[3], p[1] - f[4]);
         let m = el.mass[e];
         acc[b][0] += m * (rx * (v[1] - f[1]) - ry * (v[0] - f[0])) + el.inertia[e] * v[2];
@@ -159,18 +159,20 @@ pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity:
 /// gather them here over the adjacency.
 #[allow(clippy::too_many_arguments)]
 pub fn advance<const FRAME: bool>(
-    el: &mut Elements,
+    el: &Elements,
+    pos: &mut [[f64; 3]],
+    vel: &mut [[f64; 3]],
+    force: &mut [[f64; 3]],
     contacts: &Contacts,
     sums: &[[f64; 3]],
     rebuild_pos: &[[f64; 2]],
+    margin_m: &[f64],
     drive: Drive<'_>,
     p: MotionParams,
     partial: &mut [MotionReport],
     parallel: bool,
 ) {
-    let Elements { pos, vel, force, mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed, .. } = el;
-    let (mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed) =
-        (&*mass, &*inertia, &*inv_mass, &*inv_inertia, &*motion, &*load, &*radius, &*body, &*prescribed);
+    let Elements { mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed, .. } = el;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
@@ -229,7 +231,7 @@ pub fn advance<const FRAME: bool>(
                 r.first_bad = e;
             }
             let (dx, dy) = (x[0] - rebuild_pos[e][0], x[1] - rebuild_pos[e][1]);
-            r.max_drift2_m2 = r.max_drift2_m2.max(dx * dx + dy * dy);
+            r.drifted |= dx * dx + dy * dy > margin_m[e] * margin_m[e];
         }
         r
     };

@@ -2,29 +2,36 @@
 //!
 //! 1. **contact processing** (`forces`): every contact's force from the current positions;
 //! 2. **element motion** (`integrate`): gather forces, central-difference update, blow-up watch;
-//! 3. **contact detection** (`detect`): when any element has drifted more than half the
-//!    neighbour skin since the last rebuild, rebuild the candidate pairs, keeping bonds and
-//!    touching frictional contacts with their history and dropping separated ones.
+//! 3. **contact detection** (`detect`, `neighbours`): when an element has drifted further than
+//!    its neighbour margin since the last rebuild, rebuild the candidate pairs, keeping bonds
+//!    and frictional contacts with their history.
+//!
+//! A [`Model`]'s fields say how they change: configuration fixed when it is built (elements'
+//! constants, contact classes, the enabled law parts, boundary groups, the time step), the
+//! [`State`] that stepping changes (what a checkpoint holds), and scratch buffers.
 
 pub mod boundary;
-pub mod checkpoint;
 pub mod build;
+pub mod checkpoint;
 pub mod contacts;
 pub mod detect;
 pub mod energy;
 pub mod forces;
 pub mod integrate;
 pub mod law;
+pub mod neighbours;
 pub mod stability;
 pub mod state;
 
+use std::ops::Range;
+
+use serde::{Deserialize, Serialize};
+
 use boundary::{LoadGroup, MotionGroup};
-use contacts::{Bond, Contact, Contacts};
-use detect::BroadPhase;
-use energy::Ledger;
+use contacts::Bond;
 use integrate::{Drive, MotionParams, MotionReport};
-use law::{ContactClass, Dissipation};
-use state::Elements;
+use law::{ContactClass, Dissipation, Parts};
+pub use state::{Elements, State};
 
 use crate::error::{Error, Result};
 
@@ -40,7 +47,7 @@ pub(crate) fn class_index(a: usize, b: usize, kinds: usize) -> u16 {
 }
 
 /// How the time step was chosen.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct StepInfo {
     /// Bound on the top frequency used, rad/s.
     pub omega_bound_rad_per_s: f64,
@@ -56,28 +63,28 @@ pub struct StepInfo {
     pub detail: String,
 }
 
-/// A model ready to step.
-#[derive(Debug, Clone)]
-pub struct Model {
-    /// Elements.
-    pub el: Elements,
-    /// Contacts.
-    pub contacts: Contacts,
-    /// Contact classes.
-    pub classes: Vec<ContactClass>,
-    kinds: usize,
-    /// Prescribed-motion groups.
-    pub motions: Vec<MotionGroup>,
-    /// Load groups.
-    pub loads: Vec<LoadGroup>,
-    /// Motion-stage parameters (Δt, α, gravity, speed limit).
-    pub motion: MotionParams,
-    /// Stiffness-proportional damping present (dashpot part on).
-    damped: bool,
-    /// Neighbour skin, m.
-    pub skin_m: f64,
-    rebuild_pos: Vec<[f64; 2]>,
-    broad: BroadPhase,
+/// A body: a named range of elements (a lattice, a projectile).
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Body {
+    /// Name from the scene.
+    pub name: String,
+    /// Its elements.
+    pub elements: Range<usize>,
+}
+
+/// Where a model's steps run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub enum Threading {
+    /// On the rayon pool the caller runs in, when the model is large enough (a lone run).
+    #[default]
+    Pool,
+    /// On the calling thread only (a run inside a sweep, which is itself one task of the pool).
+    Serial,
+}
+
+#[derive(Debug, Clone, Default)]
+struct Scratch {
+    broad: detect::BroadPhase,
     pairs: Vec<(u32, u32)>,
     diss_partial: Vec<Dissipation>,
     motion_partial: Vec<MotionReport>,
@@ -87,21 +94,41 @@ pub struct Model {
     frame_scratch: Vec<[f64; 5]>,
     /// Per-element contact force sums of stage 1 when it runs on one thread (else empty).
     contact_sums: Vec<[f64; 3]>,
+}
+
+/// A model ready to step.
+#[derive(Debug, Clone)]
+pub struct Model {
+    // Configuration, fixed when built.
+    /// Element constants.
+    pub el: Elements,
+    /// Contact classes, `class_index(kind_i, kind_j)`.
+    pub classes: Vec<ContactClass>,
+    /// Optional law parts on.
+    pub parts: Parts,
+    kinds: usize,
+    /// Bodies, in scene order.
+    pub bodies: Vec<Body>,
+    /// Prescribed-motion groups.
+    pub motions: Vec<MotionGroup>,
+    /// Load groups.
+    pub loads: Vec<LoadGroup>,
+    /// Motion-stage parameters (Δt, α, gravity, speed limit).
+    pub motion: MotionParams,
+    /// Neighbour search settings.
+    pub neighbours: neighbours::Settings,
     /// Mass-proportional damping spares each body's rigid motion (see `integrate::advance`).
     pub damp_relative_to_rigid: bool,
-    bodies: usize,
-    /// Energy ledger.
-    pub ledger: Ledger,
-    /// Simulated time, s.
-    pub time_s: f64,
-    /// Completed steps.
-    pub steps: u64,
-    /// Neighbour rebuilds so far.
-    pub rebuilds: u64,
     /// Time-step choice.
     pub step_info: StepInfo,
+    /// Where steps run.
+    pub threading: Threading,
     /// Contacts from which the stages run on rayon's pool (see [`PARALLEL_MIN_CONTACTS`]).
     pub parallel_min_contacts: usize,
+    // What stepping changes.
+    /// The evolving state.
+    pub state: State,
+    scratch: Scratch,
 }
 
 impl Model {
@@ -110,14 +137,28 @@ impl Model {
         self.motion.dt_s
     }
 
+    /// Simulated time, s.
+    pub fn time_s(&self) -> f64 {
+        self.state.steps as f64 * self.motion.dt_s
+    }
+
+    /// Completed steps.
+    pub fn steps(&self) -> u64 {
+        self.state.steps
+    }
+
+    /// The body named `name`.
+    pub fn body(&self, name: &str) -> Option<&Body> {
+        self.bodies.iter().find(|b| b.name == name)
+    }
+
     /// Advance one step. On blow-up the error names the step and the element; the state is
     /// then unusable (the caller must not write it out).
     pub fn step(&mut self) -> Result<()> {
         self.process_contacts();
-        let drift2_m2 = self.move_elements()?;
-        self.detect_contacts(drift2_m2);
-        self.steps += 1;
-        self.time_s = self.steps as f64 * self.motion.dt_s;
+        let drifted = self.move_elements()?;
+        self.detect_contacts(drifted);
+        self.state.steps += 1;
         Ok(())
     }
 
@@ -130,61 +171,64 @@ impl Model {
     }
 
     fn parallel(&self) -> bool {
-        self.contacts.len() >= self.parallel_min_contacts && rayon::current_num_threads() > 1
+        self.threading == Threading::Pool
+            && self.state.contacts.len() >= self.parallel_min_contacts
+            && rayon::current_num_threads() > 1
     }
 
     fn process_contacts(&mut self) {
         let parallel = self.parallel();
-        let n_chunks = self.contacts.len().div_ceil(forces::CHUNK);
-        self.diss_partial.resize(n_chunks, Dissipation::default());
-        self.contact_sums.clear();
+        let s = &mut self.scratch;
+        let n_chunks = self.state.contacts.len().div_ceil(forces::CHUNK);
+        s.diss_partial.resize(n_chunks, Dissipation::default());
+        s.contact_sums.clear();
         if !parallel {
-            self.contact_sums.resize(self.el.len(), [0.0; 3]);
+            s.contact_sums.resize(self.el.len(), [0.0; 3]);
         }
-        let sums = if parallel { None } else { Some(&mut self.contact_sums[..]) };
-        let Contacts { list, force, .. } = &mut self.contacts;
-        let (el, classes, dt, diss) = (&self.el, &self.classes[..], self.motion.dt_s, &mut self.diss_partial[..]);
-        if self.damped {
-            forces::process::<true>(el, list, force, classes, dt, diss, sums);
-        } else {
-            forces::process::<false>(el, list, force, classes, dt, diss, sums);
+        let st = &mut self.state;
+        let contacts::Contacts { list, extra, force, .. } = &mut st.contacts;
+        let stage = forces::Stage {
+            pos: &st.pos,
+            vel: &st.vel,
+            list,
+            extra,
+            force,
+            classes: &self.classes,
+            dt_s: self.motion.dt_s,
+            partial: &mut s.diss_partial,
+            sums: if parallel { None } else { Some(&mut s.contact_sums[..]) },
+        };
+        self.parts.dispatch(stage);
+        for d in &s.diss_partial {
+            st.ledger.contacts.add(d);
         }
-        let mut total = Dissipation::default();
-        for d in &self.diss_partial {
-            total.add(d);
-        }
-        let l = &mut self.ledger;
-        l.plastic_j += total.plastic_j;
-        l.fracture_j += total.fracture_j;
-        l.friction_j += total.friction_j;
-        l.contact_damping_j += total.damping_j;
-        l.bonds_broken += total.broken as u64;
     }
 
-    /// Returns the largest squared drift since the last neighbour rebuild, m².
-    fn move_elements(&mut self) -> Result<f64> {
+    /// Returns whether some element drifted past its neighbour margin.
+    fn move_elements(&mut self) -> Result<bool> {
         self.update_drive();
         let parallel = self.parallel();
+        let s = &mut self.scratch;
         let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
-        self.motion_partial.resize(n_chunks, MotionReport::default());
-        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
-        let (el, c, rp, p, part) = (&mut self.el, &self.contacts, &self.rebuild_pos, self.motion, &mut self.motion_partial);
-        let sums = &self.contact_sums[..];
+        s.motion_partial.resize(n_chunks, MotionReport::default());
+        let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
+        let st = &mut self.state;
+        let (el, p) = (&self.el, self.motion);
         if self.damp_relative_to_rigid {
-            integrate::advance::<true>(el, c, sums, rp, drive, p, part, parallel);
+            integrate::advance::<true>(el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
         } else {
-            integrate::advance::<false>(el, c, sums, rp, drive, p, part, parallel);
+            integrate::advance::<false>(el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
         }
         let mut total = MotionReport::default();
-        for r in &self.motion_partial {
+        for r in &s.motion_partial {
             total.merge(r);
         }
         if total.first_bad != usize::MAX {
             let e = total.first_bad;
-            let v = self.el.vel[e];
+            let v = st.vel[e];
             return Err(Error::BlowUp {
-                step: self.steps,
-                time_s: self.time_s,
+                step: st.steps,
+                time_s: self.time_s(),
                 element: e,
                 detail: format!(
                     "velocity ({:.3e}, {:.3e}) m/s, spin {:.3e} rad/s exceeds the speed limit {:.3e} m/s or is not finite \
@@ -193,42 +237,48 @@ impl Model {
                 ),
             });
         }
-        self.ledger.mass_damping_j += total.mass_damping_j;
-        self.ledger.external_j += total.external_j;
-        Ok(total.max_drift2_m2)
+        st.ledger.mass_damping_j += total.mass_damping_j;
+        st.ledger.external_j += total.external_j;
+        Ok(total.drifted)
     }
 
     /// Loads at t, prescribed velocities at t + Δt/2 (the midpoint rule moves a kinematic
     /// element exactly along a prescribed velocity that is linear over the step).
     fn update_drive(&mut self) {
-        let (t, half) = (self.time_s, self.time_s + 0.5 * self.motion.dt_s);
-        self.load_now.clear();
-        let el = &self.el;
-        self.load_now.extend(self.loads.iter().map(|g| {
+        let (t, half) = (self.time_s(), self.time_s() + 0.5 * self.motion.dt_s);
+        let s = &mut self.scratch;
+        let (el, st) = (&self.el, &self.state);
+        s.load_now.clear();
+        s.load_now.extend(self.loads.iter().map(|g| {
             let n = g.members.len().max(1) as f64;
             match g.servo {
                 None => {
-                    let s = g.profile.at(t) / n;
-                    [g.force_n[0] * s, g.force_n[1] * s]
+                    let f = g.profile.at(t) / n;
+                    [g.force_n[0] * f, g.force_n[1] * f]
                 }
                 Some(servo) => {
                     let [dx, dy] = servo.direction;
-                    let mean: f64 = g.members.iter().map(|&e| {
-                        let u = el.displacement_m(e as usize);
-                        u[0] * dx + u[1] * dy
-                    }).sum::<f64>() / n;
+                    let mean: f64 = g
+                        .members
+                        .iter()
+                        .map(|&e| {
+                            let u = st.displacement_m(el, e as usize);
+                            u[0] * dx + u[1] * dy
+                        })
+                        .sum::<f64>()
+                        / n;
                     let f = servo.stiffness_n_per_m * (servo.target_m(t) - mean) / n;
                     [f * dx, f * dy]
                 }
             }
         }));
-        self.motion_now.clear();
-        self.motion_now.extend(self.motions.iter().map(|g| {
-            let s = g.profile.at(half);
-            [g.velocity[0] * s, g.velocity[1] * s, g.velocity[2] * s]
+        s.motion_now.clear();
+        s.motion_now.extend(self.motions.iter().map(|g| {
+            let f = g.profile.at(half);
+            [g.velocity[0] * f, g.velocity[1] * f, g.velocity[2] * f]
         }));
         if self.damp_relative_to_rigid {
-            integrate::rigid_frames(&self.el, self.bodies, &mut self.frame_now, &mut self.frame_scratch);
+            integrate::rigid_frames(el, &st.pos, &st.vel, self.bodies.len(), &mut s.frame_now, &mut s.frame_scratch);
         }
     }
 
@@ -237,84 +287,113 @@ impl Model {
     /// at second order (a free fall is then exact). Contact history is not touched.
     pub(crate) fn prime(&mut self) {
         self.update_drive();
-        let mut probe = self.contacts.clone();
+        let mut probe = self.state.contacts.clone();
         let n_chunks = probe.len().div_ceil(forces::CHUNK);
         let mut partial = vec![Dissipation::default(); n_chunks];
-        let Contacts { list, force, .. } = &mut probe;
-        forces::process::<false>(&self.el, list, force, &self.classes, 0.0, &mut partial, None);
-        let drive = Drive { load_force_n: &self.load_now, motion_velocity: &self.motion_now, rigid_frame: &self.frame_now };
+        let contacts::Contacts { list, extra, force, .. } = &mut probe;
+        let stage = forces::Stage {
+            pos: &self.state.pos,
+            vel: &self.state.vel,
+            list,
+            extra,
+            force,
+            classes: &self.classes,
+            dt_s: 0.0,
+            partial: &mut partial,
+            sums: None,
+        };
+        Parts { damping: false, ..self.parts }.dispatch(stage);
+        let s = &self.scratch;
+        let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
         let f = integrate::forces_now(&self.el, &probe, drive, self.motion.gravity_mps2);
         let h = 0.5 * self.motion.dt_s;
         for (e, fe) in f.iter().enumerate() {
             let inv = [self.el.inv_mass[e], self.el.inv_mass[e], self.el.inv_inertia[e]];
             for d in 0..3 {
                 if self.el.prescribed[e] & (1 << d) == 0 {
-                    self.el.vel[e][d] -= h * fe[d] * inv[d];
+                    self.state.vel[e][d] -= h * fe[d] * inv[d];
                 }
             }
         }
     }
 
-    /// New pairs can only come within reach once some element has moved half the skin: until
+    /// New pairs can only come within reach once some element has moved past its margin: until
     /// then the candidate list is complete (each contact checks touching itself every step).
-    fn detect_contacts(&mut self, drift2_m2: f64) {
-        if drift2_m2 > 0.25 * self.skin_m * self.skin_m {
+    fn detect_contacts(&mut self, drifted: bool) {
+        if drifted {
             self.rebuild_neighbours();
         }
     }
 
-    /// Rebuild the candidate pairs from the current positions (broad phase + merge).
+    /// Rebuild the candidate pairs from the current positions (margins, broad phase, merge).
     pub fn rebuild_neighbours(&mut self) {
-        let n = self.el.len();
-        let pos = &self.el.pos;
-        self.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, self.skin_m, &mut self.pairs);
-        let el = &self.el;
-        let kinds = self.kinds;
-        let touching = |c: &Contact| {
-            let (pi, pj) = (el.pos[c.i as usize], el.pos[c.j as usize]);
-            (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.d0 * c.d0
+        let (st, s) = (&mut self.state, &mut self.scratch);
+        self.neighbours.margins(&self.el, &st.vel, self.motion.dt_s, &mut st.margin_m);
+        let (pos, margin) = (&st.pos, &st.margin_m);
+        s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], &mut s.pairs);
+        let (el, classes, kinds) = (&self.el, &self.classes, self.kinds);
+        let touching = |c: &contacts::Contact| {
+            let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
+            (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.rest_m * c.rest_m
         };
+        let class_of = |i: u32, j: u32| class_index(el.kind[i as usize] as usize, el.kind[j as usize] as usize, kinds);
         let fresh = |i: u32, j: u32| {
-            let (a, b) = (el.kind[i as usize] as usize, el.kind[j as usize] as usize);
-            Contact::frictional(i, j, class_index(a, b, kinds), el.radius[i as usize] + el.radius[j as usize])
+            let class = class_of(i, j);
+            contacts::Contact::frictional(i, j, class, classes[class as usize].radius_sum_m)
         };
+        let fresh_extra = |i: u32, j: u32| law::Extra::new(classes[class_of(i, j) as usize].radius_sum_m);
         let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
-        self.contacts.merge_candidates(&self.pairs, touching, fresh, admit, n);
-        self.rebuild_pos.clear();
-        self.rebuild_pos.extend(self.el.pos.iter().map(|p| [p[0], p[1]]));
-        self.rebuilds += 1;
+        let release = |c: &contacts::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
+        let mut released = Dissipation::default();
+        st.contacts.merge_candidates(&s.pairs, touching, fresh, fresh_extra, admit, release, &mut released, el.len());
+        st.ledger.contacts.add(&released);
+        st.rebuild_pos.clear();
+        st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
+        st.rebuilds += 1;
+    }
+
+    /// Kinetic energy, J (velocities at the half step).
+    pub fn kinetic_energy_j(&self) -> f64 {
+        self.state.kinetic_energy_j(&self.el)
     }
 
     /// Elastic energy in the contacts, J.
     pub fn strain_energy_j(&self) -> f64 {
-        energy::strain_energy_j(&self.el, &self.contacts.list, &self.classes, self.motion.dt_s)
+        let st = &self.state;
+        energy::strain_energy_j(&self.el, &st.pos, &st.vel, &st.contacts, &self.classes, self.parts, self.motion.dt_s)
     }
 
     /// Energy balance residual, J (see `energy::Ledger::residual_j`).
     pub fn energy_residual_j(&self) -> f64 {
-        self.ledger.residual_j(self.el.kinetic_energy_j(), self.strain_energy_j())
+        self.state.ledger.residual_j(self.kinetic_energy_j(), self.strain_energy_j())
     }
 
     /// Number of intact bonds.
     pub fn intact_bonds(&self) -> usize {
-        self.contacts.list.iter().filter(|c| c.bond == Bond::Intact).count()
+        self.state.contacts.list.iter().filter(|c| c.bond == Bond::Intact).count()
     }
 
     /// Total force a load group applied in the last step, [N, N].
     pub fn applied_load_n(&self, group: usize) -> [f64; 2] {
         let n = self.loads[group].members.len() as f64;
-        [self.load_now[group][0] * n, self.load_now[group][1] * n]
+        [self.scratch.load_now[group][0] * n, self.scratch.load_now[group][1] * n]
     }
 
     /// Sum of the forces on a set of elements in the last step, [N, N].
     pub fn force_on(&self, elements: &[usize]) -> [f64; 2] {
-        elements.iter().fold([0.0, 0.0], |a, &e| [a[0] + self.el.force[e][0], a[1] + self.el.force[e][1]])
+        let f = &self.state.force;
+        elements.iter().fold([0.0, 0.0], |a, &e| [a[0] + f[e][0], a[1] + f[e][1]])
+    }
+
+    /// Displacement of element `e` from its initial position, [m, m].
+    pub fn displacement_m(&self, e: usize) -> [f64; 2] {
+        self.state.displacement_m(&self.el, e)
     }
 
     /// Mean displacement of a set of elements from their initial positions, [m, m].
     pub fn mean_displacement_m(&self, elements: &[usize]) -> [f64; 2] {
         let s = elements.iter().fold([0.0, 0.0], |a, &e| {
-            let d = self.el.displacement_m(e);
+            let d = self.displacement_m(e);
             [a[0] + d[0], a[1] + d[1]]
         });
         let n = elements.len().max(1) as f64;

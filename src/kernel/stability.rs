@@ -27,8 +27,8 @@
 
 use nalgebra::{DMatrix, Matrix6, SymmetricEigen};
 
-use super::contacts::{Bond, Contact};
-use super::law::ContactClass;
+use super::contacts::{Bond, Contact, Contacts};
+use super::law::{ContactClass, Extra, Springs};
 use super::state::Elements;
 use crate::material::Arrangement;
 
@@ -53,22 +53,43 @@ pub fn contact_matrix(n: [f64; 2], li: f64, lj: f64, kn: f64, kt: f64) -> [[f64;
     k
 }
 
+/// The springs contact `k` (of `list`) has: a bond's at its present modulus (`extra` holds the
+/// rate part's ratio; empty: static), or at the stiffest the rate part allows (`stiffest`); a
+/// frictional contact's own springs.
+fn springs_of(c: &Contact, class: &ContactClass, extra: Option<&Extra>, stiffest: bool) -> Springs {
+    match c.bond {
+        Bond::Intact if stiffest => class.stiffest_bond(),
+        Bond::Intact => {
+            let r = match extra {
+                Some(x) if class.rate.enabled => x.modulus_ratio,
+                _ => 1.0,
+            };
+            Springs { kn_n_per_m: class.bond.kn_n_per_m * r, kt_n_per_m: class.bond.kt_n_per_m * r }
+        }
+        Bond::Frictional if stiffest => class.stiffest_contact(),
+        Bond::Frictional => class.contact.springs,
+    }
+}
+
 /// The contacts that carry stiffness now (bonded, or frictional and touching), with their
 /// normal and lever arms. Kinematic elements' dofs are excluded by the callers.
 fn active<'a>(
-    el: &'a Elements,
+    pos: &'a [[f64; 3]],
     list: &'a [Contact],
+    extra: &'a [Extra],
     classes: &'a [ContactClass],
+    stiffest: bool,
 ) -> impl Iterator<Item = (usize, usize, [[f64; 6]; 6])> + 'a {
-    list.iter().filter_map(move |c| {
+    list.iter().enumerate().filter_map(move |(idx, c)| {
         let (i, j) = (c.i as usize, c.j as usize);
-        let (dx, dy) = (el.pos[j][0] - el.pos[i][0], el.pos[j][1] - el.pos[i][1]);
+        let (dx, dy) = (pos[j][0] - pos[i][0], pos[j][1] - pos[i][1]);
         let d = (dx * dx + dy * dy).sqrt();
-        if c.bond == Bond::Frictional && d >= c.d0 {
+        if c.bond == Bond::Frictional && d >= c.rest_m {
             return None;
         }
         let k = &classes[c.class as usize];
-        Some((i, j, contact_matrix([dx / d, dy / d], d * k.lever_i, d * k.lever_j, k.kn_n_per_m, k.kt_n_per_m)))
+        let s = springs_of(c, k, extra.get(idx), stiffest);
+        Some((i, j, contact_matrix([dx / d, dy / d], d * k.lever_i, d * k.lever_j, s.kn_n_per_m, s.kt_n_per_m)))
     })
 }
 
@@ -76,15 +97,16 @@ fn inv_sqrt_mass(el: &Elements, e: usize) -> [f64; 3] {
     el.free_inv_sqrt_mass(e)
 }
 
-/// Gershgorin bound on ω_max of the assembled mesh, rad/s, with the rotational dofs scaled by
-/// the factor that minimises it (golden-section search on log s). Returns (ω bound, s).
-pub fn gershgorin(el: &Elements, list: &[Contact], classes: &[ContactClass]) -> (f64, f64) {
+/// Gershgorin bound on ω_max of the assembled mesh, rad/s, with every contact at the stiffest
+/// its law allows and the rotational dofs scaled by the factor that minimises the bound
+/// (golden-section search on log s). Returns (ω bound, s).
+pub fn gershgorin(el: &Elements, pos: &[[f64; 3]], list: &[Contact], classes: &[ContactClass]) -> (f64, f64) {
     let n = el.len();
     // Per element: signed self block (sums of contacts) and per dof the sums of |off-diagonal|
     // entries split by the column's dof type (translation, rotation).
     let mut diag = vec![[[0.0f64; 3]; 3]; n];
     let mut off = vec![[[0.0f64; 2]; 3]; n];
-    for (i, j, k) in active(el, list, classes) {
+    for (i, j, k) in active(pos, list, &[], classes, true) {
         let (si, sj) = (inv_sqrt_mass(el, i), inv_sqrt_mass(el, j));
         for a in 0..3 {
             for b in 0..3 {
@@ -222,11 +244,12 @@ pub fn lattice_coefficient(arrangement: Arrangement, kt_over_kn: f64, inertia_ra
     best.sqrt()
 }
 
-/// Assemble the mass-normalised stiffness as a dense matrix (small meshes); prescribed dofs
-/// get zero rows and columns.
-pub fn dense_operator(el: &Elements, list: &[Contact], classes: &[ContactClass]) -> DMatrix<f64> {
+/// Assemble the mass-normalised stiffness of the present configuration (every contact at its
+/// present stiffness) as a dense matrix (small meshes); prescribed dofs get zero rows and
+/// columns.
+pub fn dense_operator(el: &Elements, pos: &[[f64; 3]], contacts: &Contacts, classes: &[ContactClass]) -> DMatrix<f64> {
     let mut a = DMatrix::zeros(3 * el.len(), 3 * el.len());
-    for (i, j, k) in active(el, list, classes) {
+    for (i, j, k) in active(pos, &contacts.list, &contacts.extra, classes, false) {
         let ends = [(i, 0), (j, 3)];
         for &(p, op) in &ends {
             for &(q, oq) in &ends {
@@ -243,17 +266,17 @@ pub fn dense_operator(el: &Elements, list: &[Contact], classes: &[ContactClass])
 }
 
 /// Exact top frequency of the assembled mesh, rad/s, by a dense symmetric eigen-solve.
-pub fn dense_top(el: &Elements, list: &[Contact], classes: &[ContactClass]) -> f64 {
-    let a = dense_operator(el, list, classes);
+pub fn dense_top(el: &Elements, pos: &[[f64; 3]], contacts: &Contacts, classes: &[ContactClass]) -> f64 {
+    let a = dense_operator(el, pos, contacts, classes);
     SymmetricEigen::new(a).eigenvalues.max().max(0.0).sqrt()
 }
 
 /// Top frequency of the assembled mesh, rad/s, by `iterations` Lanczos steps with full
 /// re-orthogonalisation (matrix-free). A Ritz value: never above the true ω_max.
-pub fn lanczos_top(el: &Elements, list: &[Contact], classes: &[ContactClass], iterations: usize) -> f64 {
+pub fn lanczos_top(el: &Elements, pos: &[[f64; 3]], contacts: &Contacts, classes: &[ContactClass], iterations: usize) -> f64 {
     let n = 3 * el.len();
     let scale: Vec<f64> = (0..el.len()).flat_map(|e| inv_sqrt_mass(el, e)).collect();
-    let ops: Vec<(usize, usize, [[f64; 6]; 6])> = active(el, list, classes).collect();
+    let ops: Vec<(usize, usize, [[f64; 6]; 6])> = active(pos, &contacts.list, &contacts.extra, classes, false).collect();
     let apply = |x: &[f64], y: &mut [f64]| {
         y.iter_mut().for_each(|v| *v = 0.0);
         for (i, j, k) in &ops {

@@ -1,19 +1,21 @@
-//! Element state: rigid disks with two translations and one rotation, per unit of the model's
-//! out-of-plane thickness (mass and inertia already include it).
+//! What a model is made of, by how it changes: [`Elements`] holds each element's constants
+//! (fixed when the model is built), [`State`] everything a step changes. A checkpoint is the
+//! [`State`], serialised as it is (`checkpoint`).
 //!
-//! Structure of arrays, with the three components of position, velocity and force kept
-//! together (`[x, y, θ]`): the contact loop reads both elements' position and velocity at
-//! random-ish indices, and one 24-byte group is one cache access instead of three.
+//! Elements are rigid disks with two translations and one rotation, per unit of the model's
+//! out-of-plane thickness (mass and inertia already include it). Structure of arrays, with the
+//! three components of position, velocity and force kept together (`[x, y, θ]`): the contact
+//! loop reads both elements' position and velocity at random-ish indices, and one 24-byte group
+//! is one cache access instead of three.
 
-/// The elements of a model. Index `e` addresses the same element in every array.
-#[derive(Debug, Clone, Default)]
+use serde::{Deserialize, Serialize};
+
+use super::contacts::Contacts;
+use super::energy::Ledger;
+
+/// Per-element constants. Index `e` addresses the same element in every array.
+#[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]
 pub struct Elements {
-    /// Centre and rotation [x m, y m, θ rad (counter-clockwise)].
-    pub pos: Vec<[f64; 3]>,
-    /// Velocity at the half step t − Δt/2: [vx m/s, vy m/s, ω rad/s].
-    pub vel: Vec<[f64; 3]>,
-    /// Total generalised force of the last step (contacts + loads + gravity): [Fx N, Fy N, T N·m].
-    pub force: Vec<[f64; 3]>,
     /// Radius, m.
     pub radius: Vec<f64>,
     /// Mass, kg.
@@ -36,25 +38,23 @@ pub struct Elements {
     pub load: Vec<u16>,
     /// Initial [x, y] of the centre, m (for displacements).
     pub initial: Vec<[f64; 2]>,
+    /// Initial velocity [vx m/s, vy m/s, ω rad/s] at t = 0.
+    pub initial_velocity: Vec<[f64; 3]>,
 }
 
 impl Elements {
     /// Number of elements.
     pub fn len(&self) -> usize {
-        self.pos.len()
+        self.radius.len()
     }
 
     /// True when there are no elements.
     pub fn is_empty(&self) -> bool {
-        self.pos.is_empty()
+        self.radius.is_empty()
     }
 
-    /// Append one free element at rest.
-    #[allow(clippy::too_many_arguments)]
-    pub fn push(&mut self, x_m: f64, y_m: f64, radius_m: f64, mass_kg: f64, inertia_kg_m2: f64, kind: u16, body: u16) {
-        self.pos.push([x_m, y_m, 0.0]);
-        self.vel.push([0.0; 3]);
-        self.force.push([0.0; 3]);
+    /// Append one free element at `centre_m` moving with `velocity`.
+    pub fn push(&mut self, centre_m: [f64; 2], velocity: [f64; 3], radius_m: f64, mass_kg: f64, inertia_kg_m2: f64, kind: u16, body: u16) {
         self.radius.push(radius_m);
         self.mass.push(mass_kg);
         self.inertia.push(inertia_kg_m2);
@@ -65,7 +65,8 @@ impl Elements {
         self.motion.push(0);
         self.prescribed.push(0);
         self.load.push(0);
-        self.initial.push([x_m, y_m]);
+        self.initial.push(centre_m);
+        self.initial_velocity.push(velocity);
     }
 
     /// Drive element `e` by motion group `group` (0-based) in the dofs of `mask` (bit 0 x,
@@ -98,19 +99,46 @@ impl Elements {
         let f = |bit: u8, inv: f64| if p & bit != 0 { 0.0 } else { inv.sqrt() };
         [f(1, self.inv_mass[e]), f(2, self.inv_mass[e]), f(4, self.inv_inertia[e])]
     }
+}
 
+/// Everything a step changes.
+#[derive(Debug, Clone, Serialize, Deserialize)]
+pub struct State {
+    /// Centre and rotation [x m, y m, θ rad (counter-clockwise)] per element.
+    pub pos: Vec<[f64; 3]>,
+    /// Velocity at the half step t − Δt/2: [vx m/s, vy m/s, ω rad/s] per element.
+    pub vel: Vec<[f64; 3]>,
+    /// Total generalised force of the last step (contacts + loads + gravity): [Fx N, Fy N, T N·m].
+    pub force: Vec<[f64; 3]>,
+    /// Contacts with their history and last forces.
+    pub contacts: Contacts,
+    /// Element centres at the last neighbour rebuild [x m, y m] (they decide the next one).
+    pub rebuild_pos: Vec<[f64; 2]>,
+    /// Each element's neighbour margin since the last rebuild, m: a pair is a candidate while
+    /// its gap is below the sum of the two margins, and an element that drifts further than
+    /// its own margin triggers a rebuild.
+    pub margin_m: Vec<f64>,
+    /// Energy ledger.
+    pub ledger: Ledger,
+    /// Completed steps.
+    pub steps: u64,
+    /// Neighbour rebuilds so far.
+    pub rebuilds: u64,
+}
+
+impl State {
     /// Kinetic energy, J (velocities at the half step).
-    pub fn kinetic_energy_j(&self) -> f64 {
-        (0..self.len())
+    pub fn kinetic_energy_j(&self, el: &Elements) -> f64 {
+        (0..el.len())
             .map(|e| {
                 let v = self.vel[e];
-                0.5 * self.mass[e] * (v[0] * v[0] + v[1] * v[1]) + 0.5 * self.inertia[e] * v[2] * v[2]
+                0.5 * el.mass[e] * (v[0] * v[0] + v[1] * v[1]) + 0.5 * el.inertia[e] * v[2] * v[2]
             })
             .sum()
     }
 
     /// Displacement of element `e` from its initial position, [m, m].
-    pub fn displacement_m(&self, e: usize) -> [f64; 2] {
-        [self.pos[e][0] - self.initial[e][0], self.pos[e][1] - self.initial[e][1]]
+    pub fn displacement_m(&self, el: &Elements, e: usize) -> [f64; 2] {
+        [self.pos[e][0] - el.initial[e][0], self.pos[e][1] - el.initial[e][1]]
     }
 }

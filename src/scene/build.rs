@@ -2,12 +2,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::{MaterialSpec, Scene};
+use super::Scene;
 use crate::error::{Error, Result};
 use crate::kernel::boundary::{LoadGroup, MotionGroup};
 use crate::kernel::{Model, ModelBuilder, StepChoice};
 use crate::lattice::{self, Rect};
-use crate::material::{Arrangement, Material};
+use crate::material::Arrangement;
 
 /// What a probe measures.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize)]
@@ -63,9 +63,9 @@ impl Probe {
             ProbeQuantity::MeanDisplacementYM => m.mean_displacement_m(&self.elements)[1],
             ProbeQuantity::ForceXN => m.force_on(&self.elements)[0],
             ProbeQuantity::ForceYN => m.force_on(&self.elements)[1],
-            ProbeQuantity::KineticEnergyJ => m.el.kinetic_energy_j(),
+            ProbeQuantity::KineticEnergyJ => m.kinetic_energy_j(),
             ProbeQuantity::StrainEnergyJ => m.strain_energy_j(),
-            ProbeQuantity::BondsBroken => m.ledger.bonds_broken as f64,
+            ProbeQuantity::BondsBroken => m.state.ledger.bonds_broken() as f64,
             ProbeQuantity::EnergyResidualJ => m.energy_residual_j(),
             ProbeQuantity::AppliedLoadXN => m.applied_load_n(self.load_group.expect("validated"))[0],
             ProbeQuantity::AppliedLoadYN => m.applied_load_n(self.load_group.expect("validated"))[1],
@@ -86,25 +86,6 @@ pub struct Built {
     pub duration_s: f64,
     /// Probe interval, steps.
     pub every_steps: u64,
-}
-
-impl MaterialSpec {
-    /// The kernel's material.
-    pub fn to_material(&self) -> Material {
-        Material {
-            name: self.name.clone(),
-            density_kg_per_m3: self.density_kg_per_m3,
-            youngs_modulus_pa: self.youngs_modulus_pa,
-            poisson_ratio: self.poisson_ratio,
-            tensile_strength_pa: self.tensile_strength_pa,
-            compressive_strength_pa: self.compressive_strength_pa,
-            fracture_toughness_pa_sqrt_m: self.fracture_toughness_pa_sqrt_m,
-            friction_coefficient: self.friction_coefficient,
-            cohesion_n_per_m: self.cohesion_n_per_m,
-            failure: self.failure,
-            poisson_policy: self.poisson_policy,
-        }
-    }
 }
 
 /// Rayleigh coefficients (α 1/s, β s) from one point (mass-proportional only) or two points.
@@ -128,7 +109,7 @@ impl Scene {
         let g = &self.scene;
         let mut b = ModelBuilder::new(g.plane, g.thickness_m);
         b.gravity_mps2 = g.gravity_mps2;
-        let mat_index: Vec<(String, usize)> = self.material.iter().map(|m| (m.name.clone(), b.add_material(m.to_material()))).collect();
+        let mat_index: Vec<(String, usize)> = self.material.iter().map(|m| (m.name.clone(), b.add_material(m.clone()))).collect();
         let index = |name: &str| mat_index.iter().find(|(n, _)| n == name).map(|p| p.1).expect("validated");
         for (k, body) in self.body.iter().enumerate() {
             let field = |e: Error| match e {
@@ -155,7 +136,7 @@ impl Scene {
         }
         let select = |b: &ModelBuilder, r: &Rect, free_only: bool| -> Vec<usize> {
             let el = b.elements();
-            (0..el.len()).filter(|&e| r.contains(el.pos[e][0], el.pos[e][1]) && !(free_only && el.is_kinematic(e))).collect()
+            (0..el.len()).filter(|&e| r.contains(el.initial[e][0], el.initial[e][1]) && !(free_only && el.is_kinematic(e))).collect()
         };
         for (k, f) in self.fix.iter().enumerate() {
             let set = select(&b, &f.rect, false);

@@ -16,7 +16,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::{Error, Result};
 use crate::kernel::boundary::{Profile, Servo};
 use crate::lattice::Rect;
-use crate::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};
+use crate::material::{Arrangement, Material, Plane};
 
 /// A whole scene file.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
@@ -32,7 +32,7 @@ pub struct Scene {
     pub damping: Damping,
     /// Materials, referred to by name.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
-    pub material: Vec<MaterialSpec>,
+    pub material: Vec<Material>,
     /// Bodies: a lattice filling a rectangle.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub body: Vec<BodySpec>,
@@ -138,49 +138,6 @@ pub struct DampingPoint {
     pub omega_rad_per_s: f64,
     /// ξ, fraction of critical.
     pub ratio: f64,
-}
-
-/// `[[material]]`.
-#[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
-#[serde(deny_unknown_fields)]
-pub struct MaterialSpec {
-    /// Name, referred to by bodies.
-    pub name: String,
-    /// kg/m³.
-    pub density_kg_per_m3: f64,
-    /// Pa.
-    pub youngs_modulus_pa: f64,
-    /// Poisson's ratio.
-    pub poisson_ratio: f64,
-    /// Pa.
-    #[serde(default)]
-    pub tensile_strength_pa: f64,
-    /// Pa.
-    #[serde(default)]
-    pub compressive_strength_pa: f64,
-    /// Pa·√m.
-    #[serde(default)]
-    pub fracture_toughness_pa_sqrt_m: f64,
-    /// Coulomb μ.
-    #[serde(default = "default_friction")]
-    pub friction_coefficient: f64,
-    /// Cohesion of frictional contacts, N per m of thickness.
-    #[serde(default)]
-    pub cohesion_n_per_m: f64,
-    /// Failure criterion.
-    #[serde(default = "default_failure")]
-    pub failure: FailureCriterion,
-    /// What to do with ν* > 1/3 on hexagonal lattices.
-    #[serde(default)]
-    pub poisson_policy: PoissonPolicy,
-}
-
-fn default_friction() -> f64 {
-    0.5
-}
-
-fn default_failure() -> FailureCriterion {
-    FailureCriterion::None
 }
 
 /// `[[body]]`.

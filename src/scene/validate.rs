@@ -49,7 +49,7 @@ impl Scene {
             if self.material[..k].iter().any(|o| o.name == m.name) {
                 return Err(Error::input(format!("material[{k}].name"), format!("duplicate material name {:?}", m.name)));
             }
-            m.to_material().validate(&format!("material.{}", m.name))?;
+            m.validate(&format!("material.{}", m.name))?;
         }
         let known = |field: String, name: &str| -> Result<()> {
             if self.material.iter().any(|m| m.name == name) {

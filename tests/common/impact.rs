@@ -37,16 +37,15 @@ pub fn with_step(dt_s: Option<f64>) -> Model {
 pub fn state_bits(m: &Model) -> Vec<u64> {
     let mut bits = Vec::new();
     for e in 0..m.el.len() {
-        bits.extend(m.el.pos[e].iter().chain(&m.el.vel[e]).chain(&m.el.force[e]).map(|v| v.to_bits()));
+        bits.extend(m.state.pos[e].iter().chain(&m.state.vel[e]).chain(&m.state.force[e]).map(|v| v.to_bits()));
     }
-    for c in &m.contacts.list {
-        bits.extend([c.i as u64, c.j as u64, c.class as u64, c.bond as u64, c.d0.to_bits(), c.ut.to_bits(), c.dp.to_bits()]);
+    for c in &m.state.contacts.list {
+        bits.extend([c.i as u64, c.j as u64, c.class as u64, c.bond as u64, c.rest_m.to_bits(), c.ut_m.to_bits(), c.dp_m.to_bits()]);
     }
-    let l = m.ledger;
+    let l = m.state.ledger;
     bits.extend(
-        [l.external_j, l.plastic_j, l.fracture_j, l.friction_j, l.mass_damping_j, l.contact_damping_j, l.initial_j, m.time_s]
-            .map(f64::to_bits),
+        [l.external_j, l.mass_damping_j, l.initial_j, m.time_s()].into_iter().chain(l.contacts.terms().into_iter().map(|t| t.1)).map(f64::to_bits),
     );
-    bits.extend([l.bonds_broken, m.steps, m.rebuilds]);
+    bits.extend([l.bonds_broken(), m.steps(), m.state.rebuilds]);
     bits
 }

@@ -6,7 +6,7 @@ pub mod golden;
 pub mod impact;
 
 use demsweep::empirical::{Formula, Missile, Nose, Target, inverse};
-use demsweep::material::{FailureCriterion, Material, PoissonPolicy};
+use demsweep::material::{FailureCriterion, Material};
 
 /// The cracked-plate concrete of seed §4–5: E = 29.7 GPa, ν = 0.3, σ_ult = 3.44 MPa,
 /// K_Ic = 1 MPa√m.
@@ -16,19 +16,7 @@ pub fn plate_concrete(failure: FailureCriterion) -> Material {
 
 /// An elastic material that never breaks.
 pub fn elastic(e_pa: f64, nu: f64, rho: f64) -> Material {
-    Material {
-        name: "elastic".into(),
-        density_kg_per_m3: rho,
-        youngs_modulus_pa: e_pa,
-        poisson_ratio: nu,
-        tensile_strength_pa: 1.0,
-        compressive_strength_pa: 1.0,
-        fracture_toughness_pa_sqrt_m: 1.0,
-        friction_coefficient: 0.5,
-        cohesion_n_per_m: 0.0,
-        failure: FailureCriterion::None,
-        poisson_policy: PoissonPolicy::Refuse,
-    }
+    Material { tensile_strength_pa: 1.0, compressive_strength_pa: 1.0, fracture_toughness_pa_sqrt_m: 1.0, ..Material::elastic("elastic", e_pa, nu, rho) }
 }
 
 /// The report's missile with `nose`.

@@ -1,64 +1,301 @@
 //! The contact law, composed of small parts (LAMMPS GRANULAR style): normal ⊕ tangential ⊕
-//! damping ⊕ failure. A contact class carries every parameter; which optional parts run is a
-//! compile-time choice made once per step from the scene (`Parts`), so a part a scene leaves
-//! off is not even a branch in the contact loop.
+//! failure for bonds, normal ⊕ Coulomb for frictional contacts ([`friction`]), and the optional
+//! parts damping ⊕ rate ⊕ compaction. Everything a part needs lives in this module:
+//!
+//! * its parameters, one struct per part inside [`ContactClass`], built from the two materials
+//!   by [`ContactClass::between`] (YADE's Ip2 functors);
+//! * its per-contact state: the core history in [`Contact`] (rest length, shear spring, plastic
+//!   opening), the optional parts' in [`Extra`] (a parallel array, allocated only when a part
+//!   that needs it is on);
+//! * the energy it dissipates, a field of [`Dissipation`] (the ledger, the run summary and the
+//!   checkpoint list the fields from there);
+//! * whether it runs: [`Parts`], resolved once when the model is built, turned into a type
+//!   ([`PartSet`]) by [`Parts::dispatch`], so a part a scene leaves off is not even a branch in
+//!   the contact loop.
 
+pub mod compaction;
 pub mod damping;
 pub mod failure;
+pub mod friction;
 pub mod normal;
+pub mod rate;
 pub mod tangential;
 
-use super::contacts::{Bond, Contact, ContactForce};
-use crate::material::Strength;
+use serde::{Deserialize, Serialize};
 
-/// Parameters of one kind of contact (a pair of element kinds).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct ContactClass {
+use super::contacts::{Bond, Contact, ContactForce};
+use crate::error::Result;
+use crate::material::{Arrangement, FailureCriterion, Material, Plane, Strength};
+
+/// A normal and a tangential stiffness, N/m.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Springs {
     /// Normal stiffness Kn, N/m.
     pub kn_n_per_m: f64,
     /// Tangential stiffness Kt, N/m.
     pub kt_n_per_m: f64,
-    /// Bond strength (plateaus and breaking opening).
+}
+
+/// Parameters of one kind of contact (a pair of element kinds): configuration, fixed when the
+/// model is built.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct ContactClass {
+    /// Springs of a bond (eq 1.1, 3.1–3.2; two materials: half-springs in series).
+    pub bond: Springs,
+    /// Bond strength (plateaus and breaking opening; two materials: the weaker).
     pub strength: Strength,
-    /// Coulomb friction coefficient μ of frictional contacts.
-    pub friction: f64,
-    /// Cohesion c of frictional contacts, N.
-    pub cohesion_n: f64,
+    /// Frictional contacts: springs and Coulomb constants.
+    pub contact: friction::Params,
+    /// r_i + r_j, m: a new pair's rest length.
+    pub radius_sum_m: f64,
     /// Share of the centre distance from i's centre to the contact point: r_i/(r_i + r_j).
     pub lever_i: f64,
     /// Share for j: r_j/(r_i + r_j).
     pub lever_j: f64,
-    /// Normal dashpot β·Kn, N·s/m (0 without stiffness-proportional damping).
-    pub dashpot_n_s_per_m: f64,
-    /// Tangential dashpot β·Kt, N·s/m.
-    pub dashpot_t_s_per_m: f64,
+    /// Dashpots (stiffness-proportional Rayleigh damping).
+    pub damping: damping::Params,
+    /// Strain-rate effects.
+    pub rate: rate::Params,
+    /// Compaction.
+    pub compaction: compaction::Params,
 }
 
-/// Energy a contact dissipated in one step, J, and whether its bond broke.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub struct Dissipation {
-    /// Plastic work on the bond plateaus (normal and shear), J.
-    pub plastic_j: f64,
-    /// Elastic energy released by bonds breaking, J.
-    pub fracture_j: f64,
-    /// Coulomb sliding, J.
-    pub friction_j: f64,
-    /// Contact dashpots, J.
-    pub damping_j: f64,
-    /// Bonds broken.
-    pub broken: u32,
+/// One element kind's side of a contact class.
+#[derive(Debug, Clone, Copy)]
+pub struct Side<'a> {
+    /// Its material.
+    pub material: &'a Material,
+    /// Its lattice.
+    pub arrangement: Arrangement,
+    /// Its radius, m.
+    pub radius_m: f64,
 }
 
-impl Dissipation {
-    /// Add another step's or chunk's dissipation.
-    #[inline(always)]
-    pub fn add(&mut self, o: &Dissipation) {
-        self.plastic_j += o.plastic_j;
-        self.fracture_j += o.fracture_j;
-        self.friction_j += o.friction_j;
-        self.damping_j += o.damping_j;
-        self.broken += o.broken;
+/// What the classes are built in.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Context {
+    /// Plane idealisation.
+    pub plane: Plane,
+    /// Out-of-plane thickness t, m.
+    pub thickness_m: f64,
+    /// Stiffness-proportional Rayleigh coefficient β, s.
+    pub beta_s: f64,
+    /// Fastest initial or prescribed speed in the scene, m/s (the default rate cap).
+    pub max_speed_mps: f64,
+}
+
+impl ContactClass {
+    /// The class between two element kinds.
+    pub fn between(a: Side<'_>, b: Side<'_>, ctx: &Context) -> Result<ContactClass> {
+        let (ma, mb) = (a.material, b.material);
+        let t = ctx.thickness_m;
+        let (sa, sb) = (ma.stiffness(ctx.plane, a.arrangement, t)?, mb.stiffness(ctx.plane, b.arrangement, t)?);
+        let bond = Springs {
+            kn_n_per_m: friction::series(sa.kn_n_per_m, sb.kn_n_per_m),
+            kt_n_per_m: friction::series(sa.kt_n_per_m, sb.kt_n_per_m),
+        };
+        let r = 0.5 * (a.radius_m + b.radius_m);
+        let (qa, qb) = (ma.strength(ctx.plane, a.arrangement, r, t)?, mb.strength(ctx.plane, b.arrangement, r, t)?);
+        let strength = Strength {
+            normal_force_n: qa.normal_force_n.min(qb.normal_force_n),
+            shear_force_n: qa.shear_force_n.min(qb.shear_force_n),
+            plastic_opening_at_break_m: qa.plastic_opening_at_break_m.min(qb.plastic_opening_at_break_m),
+        };
+        let contact = friction::Params::between(ma, sa.kn_n_per_m, mb, sb.kn_n_per_m, t);
+        let sum = a.radius_m + b.radius_m;
+        // The energy criterion's G_f area per bond, recovered from the combined strength.
+        let energy = ma.failure == FailureCriterion::StrengthEnergy && mb.failure == FailureCriterion::StrengthEnergy;
+        let gf_area_j = if energy && strength.normal_force_n.is_finite() && strength.plastic_opening_at_break_m.is_finite() {
+            strength.normal_force_n * (strength.plastic_opening_at_break_m + 0.5 * strength.normal_force_n / bond.kn_n_per_m)
+        } else {
+            0.0
+        };
+        let fc = |s: Side<'_>| -> Result<f64> { compaction::critical_force_n(s.material, ctx.plane, s.arrangement, r, t) };
+        let compaction = if ma.compaction.is_some() && mb.compaction.is_some() {
+            compaction::Params::between((ma, fc(a)?), (mb, fc(b)?), bond.kn_n_per_m)
+        } else {
+            compaction::Params::default()
+        };
+        Ok(ContactClass {
+            bond,
+            strength,
+            contact,
+            radius_sum_m: sum,
+            lever_i: a.radius_m / sum,
+            lever_j: b.radius_m / sum,
+            damping: damping::Params::new(ctx.beta_s, bond, contact.springs),
+            rate: rate::Params::between(ma, mb, sum, ctx.max_speed_mps, gf_area_j),
+            compaction,
+        })
     }
+
+    /// Fix what depends on the time step (the rate part's memory).
+    pub fn set_time_step(&mut self, dt_s: f64) {
+        self.rate.set_time_step(dt_s);
+    }
+
+    /// The stiffest springs a bond of this class can have, N/m: the static ones times the
+    /// largest modulus ratio of the rate part (at its cap). Full compaction returns to the
+    /// initial Kn and the yield line is softer (K_c ≤ Kn), so compaction adds nothing.
+    pub fn stiffest_bond(&self) -> Springs {
+        let r = self.rate.max_modulus_ratio();
+        let c = self.compaction.stiffness_n_per_m;
+        Springs { kn_n_per_m: (self.bond.kn_n_per_m * r).max(c), kt_n_per_m: self.bond.kt_n_per_m * r }
+    }
+
+    /// The stiffest springs a frictional contact of this class can have, N/m (they are static).
+    pub fn stiffest_contact(&self) -> Springs {
+        if self.contact.has_friction() { self.contact.springs } else { Springs { kn_n_per_m: self.contact.springs.kn_n_per_m, kt_n_per_m: 0.0 } }
+    }
+}
+
+/// The optional parts a model runs (resolved once, when it is built).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+pub struct Parts {
+    /// Coulomb friction on frictional contacts (some class has μ > 0 or cohesion).
+    pub friction: bool,
+    /// Contact dashpots (β > 0).
+    pub damping: bool,
+    /// Strain-rate effects (some class's materials both have a rate law).
+    pub rate: bool,
+    /// Compaction (some class's materials both compact).
+    pub compaction: bool,
+}
+
+impl Parts {
+    /// The parts the classes need.
+    pub fn resolve(classes: &[ContactClass], beta_s: f64) -> Parts {
+        Parts {
+            friction: classes.iter().any(|k| k.contact.has_friction()),
+            damping: beta_s > 0.0,
+            rate: classes.iter().any(|k| k.rate.enabled),
+            compaction: classes.iter().any(|k| k.compaction.enabled),
+        }
+    }
+
+    /// True when contacts carry an [`Extra`] slot.
+    pub fn needs_extra(self) -> bool {
+        self.rate || self.compaction
+    }
+
+    /// Call `v` with the [`PartSet`] type of these parts.
+    pub fn dispatch<V: PartsVisitor>(self, v: V) -> V::Output {
+        macro_rules! arms {
+            ($($f:literal $d:literal $r:literal $c:literal),*) => {
+                match (self.friction, self.damping, self.rate, self.compaction) {
+                    $(($f, $d, $r, $c) => v.visit::<With<$f, $d, $r, $c>>(),)*
+                }
+            };
+        }
+        arms!(
+            false false false false, false false false true, false false true false, false false true true,
+            false true false false, false true false true, false true true false, false true true true,
+            true false false false, true false false true, true false true false, true false true true,
+            true true false false, true true false true, true true true false, true true true true
+        )
+    }
+}
+
+/// A set of optional parts as a type: the contact loop is compiled once per set.
+pub trait PartSet {
+    /// Coulomb friction.
+    const FRICTION: bool;
+    /// Contact dashpots.
+    const DAMPING: bool;
+    /// Strain-rate effects.
+    const RATE: bool;
+    /// Compaction.
+    const COMPACTION: bool;
+    /// Contacts carry an [`Extra`] slot.
+    const EXTRA: bool = Self::RATE || Self::COMPACTION;
+}
+
+/// The [`PartSet`] with the given parts on.
+#[derive(Debug, Clone, Copy)]
+pub struct With<const F: bool, const D: bool, const R: bool, const C: bool>;
+
+impl<const F: bool, const D: bool, const R: bool, const C: bool> PartSet for With<F, D, R, C> {
+    const FRICTION: bool = F;
+    const DAMPING: bool = D;
+    const RATE: bool = R;
+    const COMPACTION: bool = C;
+}
+
+/// Something to run with the parts as a type (see [`Parts::dispatch`]).
+pub trait PartsVisitor {
+    /// What it returns.
+    type Output;
+    /// Run with part set `P`.
+    fn visit<P: PartSet>(self) -> Self::Output;
+}
+
+/// Per-contact state of the optional parts (present when [`Parts::needs_extra`]).
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Extra {
+    /// Initial centre distance L0 of a bond, m (eq 6.7; the full-compaction limit).
+    pub length0_m: f64,
+    /// Held strain rate, 1/s (see [`rate`]).
+    pub rate_per_s: f64,
+    /// Zero shift of the normal spring that keeps the force continuous when the modulus
+    /// changes with the rate, m.
+    pub shift_m: f64,
+    /// Modulus ratio the springs had in the last step.
+    pub modulus_ratio: f64,
+}
+
+impl Extra {
+    /// A contact at rest with initial length `length0_m`.
+    pub fn new(length0_m: f64) -> Extra {
+        Extra { length0_m, rate_per_s: 0.0, shift_m: 0.0, modulus_ratio: 1.0 }
+    }
+}
+
+macro_rules! dissipation {
+    ($($(#[$doc:meta])* $field:ident),* $(,)?) => {
+        /// Energy the contacts dissipated, J, by mechanism, and the bonds broken. Every
+        /// mechanism is listed once, here: [`Dissipation::terms`] gives them to the ledger, the
+        /// run summary and the checkpoint.
+        #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
+        pub struct Dissipation {
+            $($(#[$doc])* pub $field: f64,)*
+            /// Bonds broken.
+            pub broken: u64,
+        }
+
+        impl Dissipation {
+            /// Add another step's or chunk's dissipation.
+            #[inline(always)]
+            pub fn add(&mut self, o: &Dissipation) {
+                $(self.$field += o.$field;)*
+                self.broken += o.broken;
+            }
+
+            /// (name, J) of every mechanism, in a fixed order.
+            pub fn terms(&self) -> Vec<(&'static str, f64)> {
+                vec![$((stringify!($field), self.$field)),*]
+            }
+
+            /// Everything dissipated, J.
+            pub fn total_j(&self) -> f64 {
+                0.0 $(+ self.$field)*
+            }
+        }
+    };
+}
+
+dissipation! {
+    /// Plastic work on the bond plateaus (normal and shear), J.
+    plastic_work_j,
+    /// Elastic energy released by bonds breaking, J.
+    fracture_energy_j,
+    /// Coulomb sliding and shear springs released on separation, J.
+    friction_j,
+    /// Contact dashpots, J.
+    contact_damping_j,
+    /// Work along the compaction yield line, J.
+    compaction_work_j,
+    /// Energy the rate-dependent modulus took out of (> 0) or put into the springs, J.
+    rate_work_j,
 }
 
 /// Kinematics of a contact at the current configuration.
@@ -80,73 +317,104 @@ pub struct Kinematics {
     pub lj_m: f64,
 }
 
-/// Evaluate one touching or bonded contact: update its history and return its force.
-/// `DAMP` switches the dashpot part on.
+/// Evaluate one touching or bonded contact: update its history and return its force. `x` is
+/// the contact's [`Extra`] slot (a scratch value when the parts need none).
 #[inline(always)]
-pub fn interact<const DAMP: bool>(c: &mut Contact, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
-    let opening = g.d_m - c.d0;
-    let slip = g.vt_mps * dt_s;
-    let (mut f_n, mut f_t);
-    if c.bond == Bond::Intact {
-        let (f, w) = normal::bonded(opening, &mut c.dp, k.kn_n_per_m, k.strength.normal_force_n);
-        let (ft, ut, ws) = tangential::capped_spring(c.ut, slip, k.kt_n_per_m, k.strength.shear_force_n);
-        diss.plastic_j += w + ws;
-        if failure::breaks(c.dp, k.strength.plastic_opening_at_break_m) {
-            diss.fracture_j += failure::released_energy_j(f, ft, k.kn_n_per_m, k.kt_n_per_m);
-            diss.broken += 1;
-            c.bond = Bond::Frictional;
-            c.dp = 0.0;
-            c.ut = 0.0;
-            // Breaking needs tension beyond the plateau (opening > δ_p ≥ 0): the pair is apart,
-            // and a frictional contact that is apart carries nothing.
-            return ContactForce::default();
-        }
-        c.ut = ut;
-        f_n = f;
-        f_t = ft;
-        if DAMP {
-            let (dn, dt) = damping::dashpot(k, g.vn_mps, g.vt_mps);
-            f_n += dn;
-            f_t += dt;
-            diss.damping_j += (dn * g.vn_mps + dt * g.vt_mps) * dt_s;
-        }
-        return force(g, f_n, f_t);
-    }
-    frictional::<DAMP>(c, k, g, opening, slip, dt_s, diss)
+pub fn interact<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
+    if c.bond == Bond::Intact { bonded::<P>(c, x, k, g, dt_s, diss) } else { friction::touching::<P>(c, k, g, dt_s, diss) }
 }
 
+/// A bond: normal spring with a tensile plateau (and compaction), shear spring with its
+/// plateau, the failure rule, dashpots; springs and strengths scaled by the rate part.
 #[inline(always)]
-fn frictional<const DAMP: bool>(
-    c: &mut Contact,
-    k: &ContactClass,
-    g: &Kinematics,
-    opening: f64,
-    slip: f64,
-    dt_s: f64,
-    diss: &mut Dissipation,
-) -> ContactForce {
-    let mut f_n = normal::frictional(opening, k.kn_n_per_m);
-    let limit = k.friction * (-f_n) + k.cohesion_n;
-    let (mut f_t, ut, w) = tangential::capped_spring(c.ut, slip, k.kt_n_per_m, limit);
-    c.ut = ut;
-    diss.friction_j += w;
-    if DAMP {
-        // A frictional contact never pulls, and a sliding one has no tangential dashpot.
-        let (dn, dt) = damping::dashpot(k, g.vn_mps, g.vt_mps);
-        let fn_damped = (f_n + dn).min(0.0);
-        diss.damping_j += (fn_damped - f_n) * g.vn_mps * dt_s;
-        f_n = fn_damped;
-        if w == 0.0 {
-            f_t += dt;
-            diss.damping_j += dt * g.vt_mps * dt_s;
+fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
+    let opening = g.d_m - c.rest_m;
+    let slip = g.vt_mps * dt_s;
+    let (mut kn, mut kt) = (k.bond.kn_n_per_m, k.bond.kt_n_per_m);
+    let mut ratios = rate::STATIC;
+    let mut elastic_opening = opening;
+    if P::RATE && k.rate.enabled {
+        ratios = k.rate.update(&mut x.rate_per_s, g.vn_mps, 1.0 / x.length0_m);
+        let stretch = opening - c.dp_m - x.shift_m;
+        let ratio = if stretch < 0.0 { ratios[0] } else { ratios[1] };
+        if ratio != x.modulus_ratio {
+            // Keep the force at this configuration: the new modulus acts on what follows.
+            let scale = x.modulus_ratio / ratio;
+            diss.rate_work_j += 0.5 * x.modulus_ratio * (kn * stretch * stretch + kt * c.ut_m * c.ut_m) * (1.0 - scale);
+            x.shift_m = opening - c.dp_m - stretch * scale;
+            c.ut_m *= scale;
+            x.modulus_ratio = ratio;
         }
+        kn *= ratio;
+        kt *= ratio;
+        elastic_opening = opening - x.shift_m;
+    }
+    let xi = ratios[2];
+    let (mut f_n, w) = normal::bonded(elastic_opening, &mut c.dp_m, kn, k.strength.normal_force_n * xi);
+    if P::COMPACTION && k.compaction.enabled && f_n < 0.0 {
+        let (f, work) = k.compaction.compress(f_n, kn, &mut c.rest_m, x.length0_m, ratios[3]);
+        f_n = f;
+        diss.compaction_work_j += work;
+    }
+    let (ft, ut, ws) = tangential::capped_spring(c.ut_m, slip, kt, k.strength.shear_force_n * xi);
+    diss.plastic_work_j += w + ws;
+    let at_break = if P::RATE && k.rate.enabled {
+        k.rate.opening_at_break_m(k.strength.plastic_opening_at_break_m, k.strength.normal_force_n, xi, kn)
+    } else {
+        k.strength.plastic_opening_at_break_m
+    };
+    if failure::breaks(c.dp_m, at_break) {
+        diss.fracture_energy_j += failure::released_energy_j(f_n, ft, kn, kt);
+        diss.broken += 1;
+        c.bond = Bond::Frictional;
+        c.dp_m = 0.0;
+        c.ut_m = 0.0;
+        if P::RATE {
+            x.shift_m = 0.0;
+            x.modulus_ratio = 1.0;
+        }
+        // Breaking needs tension beyond the plateau (opening > δ_p ≥ 0): the pair is apart,
+        // and a frictional contact that is apart carries nothing.
+        return ContactForce::default();
+    }
+    c.ut_m = ut;
+    let mut f_t = ft;
+    if P::DAMPING {
+        let (dn, dt) = damping::dashpot(k.damping.bond_n, k.damping.bond_t, g.vn_mps, g.vt_mps);
+        f_n += dn;
+        f_t += dt;
+        diss.contact_damping_j += (dn * g.vn_mps + dt * g.vt_mps) * dt_s;
     }
     force(g, f_n, f_t)
 }
 
+/// Elastic energy the contact's springs will hold once this step's slip is added, J: the law
+/// is evaluated on a copy (the shear springs' history lags the positions by one step).
+#[inline(always)]
+pub fn stored_energy_j<P: PartSet>(c: &Contact, x: &Extra, k: &ContactClass, g: &Kinematics, dt_s: f64) -> f64 {
+    let (mut probe, mut px) = (*c, *x);
+    interact::<P>(&mut probe, &mut px, k, g, dt_s, &mut Dissipation::default());
+    match probe.bond {
+        Bond::Intact => {
+            let (mut e, mut kn, mut kt) = (g.d_m - probe.rest_m - probe.dp_m, k.bond.kn_n_per_m, k.bond.kt_n_per_m);
+            if P::RATE && k.rate.enabled {
+                e -= px.shift_m;
+                kn *= px.modulus_ratio;
+                kt *= px.modulus_ratio;
+            }
+            0.5 * kn * e * e + 0.5 * kt * probe.ut_m * probe.ut_m
+        }
+        Bond::Frictional if g.d_m < probe.rest_m => {
+            let (e, s) = (g.d_m - probe.rest_m, &k.contact.springs);
+            0.5 * s.kn_n_per_m * e * e + 0.5 * s.kt_n_per_m * probe.ut_m * probe.ut_m
+        }
+        Bond::Frictional => 0.0,
+    }
+}
+
 /// Cartesian force on i and the torques, from the normal (tension positive) and tangential force.
 #[inline(always)]
-fn force(g: &Kinematics, f_n: f64, f_t: f64) -> ContactForce {
+pub(crate) fn force(g: &Kinematics, f_n: f64, f_t: f64) -> ContactForce {
     ContactForce {
         fx: f_n * g.nx - f_t * g.ny,
         fy: f_n * g.ny + f_t * g.nx,

@@ -7,6 +7,10 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 
+pub mod row;
+
+pub use row::Cell;
+
 /// A table: a header and rows of already formatted cells.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Table {
@@ -46,6 +50,31 @@ impl Table {
     /// Index of a column.
     pub fn column(&self, name: &str) -> Option<usize> {
         self.header.iter().position(|h| h == name)
+    }
+
+    /// The cell of column `name` in row `row`.
+    pub fn get(&self, row: usize, name: &str) -> Option<&str> {
+        Some(self.rows.get(row)?.get(self.column(name)?)?.as_str())
+    }
+
+    /// A one-row table of a serialisable struct (see [`row`]).
+    pub fn from_row<T: serde::Serialize>(value: &T) -> Result<Table> {
+        Table::from_rows(std::slice::from_ref(value))
+    }
+
+    /// A table of serialisable structs, one row each; every row must have the same columns.
+    pub fn from_rows<T: serde::Serialize>(values: &[T]) -> Result<Table> {
+        let mut t = Table::default();
+        for v in values {
+            let cells = row::cells(v).map_err(|e| Error::input("<table>", e))?;
+            if t.header.is_empty() {
+                t.header = cells.iter().map(|c| c.0.clone()).collect();
+            } else if t.header.len() != cells.len() || t.header.iter().zip(&cells).any(|(h, c)| *h != c.0) {
+                return Err(Error::input("<table>", "rows with different columns"));
+            }
+            t.rows.push(cells.iter().map(|c| c.1.text()).collect());
+        }
+        Ok(t)
     }
 }
 

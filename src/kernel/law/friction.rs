@@ -1,0 +1,108 @@
+//! Frictional contacts (seed eq 2.1, Fig 2.4): every pair that touches without a bond, new
+//! contacts (fragments, the projectile) and broken bonds alike. Compression-only normal spring,
+//! a tangential spring capped by Coulomb's −μ Fn + c.
+//!
+//! **Their springs** do not come from a bond's Kt (which is zero for a hexagonal lattice with
+//! ν* ≥ 1/3, e.g. steel in plane strain, and would leave such a body frictionless). Each
+//! element contributes a half-spring of its material: normal 2·Kn with Kn its bond's normal
+//! stiffness (eq 1.1 or 3.1; between two elements of one material the contact is exactly as
+//! stiff in compression as the bond it may replace, so a closed crack carries compression as
+//! the intact lattice does), tangential Mindlin's fraction 2(1−ν)/(2−ν) of it, ν the material's
+//! Poisson ratio (Mindlin 1949: the tangential to normal compliance ratio of elastic bodies in
+//! contact; 0.89 for concrete, 0.82 for steel). The halves act in series.
+//!
+//! **Touching** is d < d0*, the contact's rest length: r_i + r_j for a new pair; a broken bond's
+//! rest length (its initial distance, moved in by compaction) while it still touches. A pair
+//! that is apart forgets: its shear spring releases what it held, and its rest length relaxes
+//! to min(r_i + r_j, d), so a compacted pair that separates never springs back into an overlap,
+//! and a pair that moves apart beyond r_i + r_j is exactly a new pair. This happens in the
+//! contact loop, so the physics does not depend on when the neighbour list is rebuilt.
+
+use serde::{Deserialize, Serialize};
+
+use super::{ContactClass, Dissipation, Kinematics, PartSet, Springs, damping, force, normal, tangential};
+use crate::kernel::contacts::{Contact, ContactForce};
+use crate::material::Material;
+
+/// Springs and Coulomb constants of a contact class's frictional contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Params {
+    /// Normal and tangential stiffness, N/m.
+    pub springs: Springs,
+    /// Coulomb coefficient μ.
+    pub mu: f64,
+    /// Cohesion c, N.
+    pub cohesion_n: f64,
+}
+
+/// Mindlin's tangential to normal stiffness ratio of an elastic body with Poisson ratio ν.
+pub fn mindlin_ratio(poisson: f64) -> f64 {
+    2.0 * (1.0 - poisson) / (2.0 - poisson)
+}
+
+/// Two half-springs in series, each twice its element's `x`, `y`: equal halves give x.
+pub fn series(x: f64, y: f64) -> f64 {
+    if x + y > 0.0 { 2.0 * x * y / (x + y) } else { 0.0 }
+}
+
+impl Params {
+    /// Between elements of materials `a` and `b` whose bonds have normal stiffness `kn_a`,
+    /// `kn_b` (N/m); μ is the mean of the two, the cohesion the smaller, per `thickness_m`.
+    pub fn between(a: &Material, kn_a: f64, b: &Material, kn_b: f64, thickness_m: f64) -> Params {
+        Params {
+            springs: Springs {
+                kn_n_per_m: series(kn_a, kn_b),
+                kt_n_per_m: series(kn_a * mindlin_ratio(a.poisson_ratio), kn_b * mindlin_ratio(b.poisson_ratio)),
+            },
+            mu: 0.5 * (a.friction_coefficient + b.friction_coefficient),
+            cohesion_n: a.cohesion_n_per_m.min(b.cohesion_n_per_m) * thickness_m,
+        }
+    }
+
+    /// True when the contacts can carry a tangential force.
+    pub fn has_friction(&self) -> bool {
+        self.mu > 0.0 || self.cohesion_n > 0.0
+    }
+}
+
+/// A touching frictional contact: update its shear spring and return its force.
+#[inline(always)]
+pub fn touching<P: PartSet>(c: &mut Contact, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
+    let opening = g.d_m - c.rest_m;
+    let s = &k.contact.springs;
+    let mut f_n = normal::frictional(opening, s.kn_n_per_m);
+    let (mut f_t, mut slid) = (0.0, false);
+    if P::FRICTION {
+        let limit = k.contact.mu * (-f_n) + k.contact.cohesion_n;
+        let (ft, ut, w) = tangential::capped_spring(c.ut_m, g.vt_mps * dt_s, s.kt_n_per_m, limit);
+        c.ut_m = ut;
+        diss.friction_j += w;
+        f_t = ft;
+        slid = w != 0.0;
+    }
+    if P::DAMPING {
+        // A frictional contact never pulls, and a sliding one has no tangential dashpot.
+        let (dn, dt) = damping::dashpot(k.damping.contact_n, k.damping.contact_t, g.vn_mps, g.vt_mps);
+        let fn_damped = (f_n + dn).min(0.0);
+        diss.contact_damping_j += (fn_damped - f_n) * g.vn_mps * dt_s;
+        f_n = fn_damped;
+        if P::FRICTION && !slid {
+            f_t += dt;
+            diss.contact_damping_j += dt * g.vt_mps * dt_s;
+        }
+    }
+    force(g, f_n, f_t)
+}
+
+/// A frictional contact that is apart (distance² `d2_m2` ≥ rest²): it forgets its shear
+/// spring (booking what it held as friction) and its rest length relaxes toward r_i + r_j.
+#[inline(always)]
+pub fn apart(c: &mut Contact, k: &ContactClass, d2_m2: f64, diss: &mut Dissipation) {
+    if c.ut_m != 0.0 {
+        diss.friction_j += 0.5 * k.contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
+        c.ut_m = 0.0;
+    }
+    if c.rest_m != k.radius_sum_m {
+        c.rest_m = k.radius_sum_m.min(d2_m2.sqrt());
+    }
+}
