@@ -62,12 +62,13 @@ pub struct Lattice {
 pub const IRREGULAR_BOND_GAP: f64 = 0.35;
 
 /// Relative tolerance on "touching" for the regular lattices' bonds.
-const TOUCH: f64 = 1e-9;
+pub(crate) const TOUCH: f64 = 1e-9;
 
-fn bonds_within(centres: &[[f64; 2]], radius_m: f64, margin_m: f64) -> Vec<(u32, u32)> {
+/// The pairs of `centres` (disks of radius `radius_m`) whose gap is below `margin_m`.
+pub(crate) fn bonds_within(centres: &[[f64; 2]], radius_m: f64, margin_m: f64) -> Vec<(u32, u32)> {
     let r = vec![radius_m; centres.len()];
     let mut out = Vec::new();
-    BroadPhase::default().pairs(|e| centres[e], &r, |_| 0.5 * margin_m, &mut out);
+    BroadPhase::default().pairs(|e| centres[e], &r, |_| 0.5 * margin_m, None, &mut out);
     out
 }
 
@@ -229,7 +230,7 @@ fn relax_overlaps(centres: &mut [[f64; 2]], r: f64, b: [f64; 4]) {
     let mut pairs = Vec::new();
     let mut shift = vec![[0.0f64; 2]; centres.len()];
     for _ in 0..20_000 {
-        bp.pairs(|e| centres[e], &radii, |_| 0.0, &mut pairs);
+        bp.pairs(|e| centres[e], &radii, |_| 0.0, None, &mut pairs);
         let mut worst = 0.0f64;
         shift.iter_mut().for_each(|s| *s = [0.0, 0.0]);
         for &(i, j) in &pairs {

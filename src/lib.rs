@@ -19,4 +19,5 @@ pub mod lattice;
 pub mod material;
 pub mod run;
 pub mod scene;
+pub mod shape;
 pub mod table;

@@ -59,8 +59,10 @@ pub struct RunSummary {
     pub energy_residual_j: f64,
     /// The residual over the energy put in (initial + |external|): the ledger's closure.
     pub energy_error: f64,
-    /// Neighbour rebuilds.
+    /// Full neighbour rebuilds.
     pub neighbour_rebuilds: u64,
+    /// Local neighbour updates.
+    pub neighbour_local_updates: u64,
     /// Wall time of the stepping loop, s (of the resumed part, after a resume).
     pub wall_s: f64,
     /// Element-steps per second of wall time.
@@ -310,6 +312,7 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         energy_residual_j: residual,
         energy_error: residual / (l.initial_j + l.external_j.abs()).max(f64::MIN_POSITIVE),
         neighbour_rebuilds: m.state.rebuilds,
+        neighbour_local_updates: m.state.local_updates,
         wall_s: (wall * 1e3).round() / 1e3,
         element_steps_per_s: m.el.len() as f64 * (m.steps() - first_step) as f64 / wall.max(1e-9),
         probes: Columns(probes),

@@ -50,6 +50,18 @@ pub fn lb_to_kg(m_lb: f64) -> f64 {
 pub fn pcf_to_kg_per_m3(rho_pcf: f64) -> f64 {
     rho_pcf * KG_PER_M3_PER_PCF
 }
+/// psi·√in → Pa·√m (fracture toughness).
+pub fn psi_sqrt_in_to_pa_sqrt_m(k: f64) -> f64 {
+    psi_to_pa(k) * M_PER_IN.sqrt()
+}
+/// lbf → N.
+pub fn lbf_to_n(f_lbf: f64) -> f64 {
+    f_lbf * N_PER_LBF
+}
+/// kg → lb (mass).
+pub fn kg_to_lb(m_kg: f64) -> f64 {
+    m_kg / KG_PER_LB
+}
 /// Mass density lb·s²/in⁴ (the source's inch-pound-second unit) → kg/m³.
 pub fn lbs2_per_in4_to_kg_per_m3(rho: f64) -> f64 {
     rho * N_PER_LBF / M_PER_IN.powi(4)
@@ -78,6 +90,12 @@ mod tests {
     fn pcf_matches_formulas_factor() {
         // FORMULAS §1: 1 lb/ft³ = 16.01846337 kg/m³.
         assert!((pcf_to_kg_per_m3(1.0) - 16.018_463_37).abs() < 1e-8);
+    }
+
+    #[test]
+    fn source_toughness_is_one_mpa_root_metre() {
+        // Table 7.1: 910 psi·√in (the table prints "psi-s^1/2", a misprint).
+        assert!((psi_sqrt_in_to_pa_sqrt_m(910.0) / 1.0e6 - 1.0).abs() < 2e-3);
     }
 
     #[test]

@@ -87,6 +87,11 @@ fn kernel_bound_covers_the_assembled_mesh() {
             model.dt_s() / (2.0 / exact)
         );
         assert!(bound >= exact, "{arrangement:?}: bound {bound} below the measured {exact}");
+        // On a regular lattice the bound is the infinite lattice's top: tight (0.9 % above the
+        // 127-element mesh's measured top).
+        if arrangement != Arrangement::Irregular {
+            assert!(bound <= 1.02 * exact, "{arrangement:?}: bound {bound} more than 2 % above the measured {exact}");
+        }
         assert!(lanczos <= exact * (1.0 + 1e-9) && lanczos > 0.99 * exact, "Lanczos {lanczos} vs {exact}");
     }
 }
@@ -161,4 +166,90 @@ fn a_step_well_above_the_limit_is_caught_with_step_and_element() {
     assert!(matches!(err, Error::BlowUp { .. }), "{msg}");
     assert!(msg.contains("step ") && msg.contains("element "), "{msg}");
     assert_eq!(err.exit_code(), 3);
+}
+
+#[test]
+fn bound_covers_a_projectile_pressed_into_a_block_with_every_contact_at_its_stiffest() {
+    // The seed's materials (Tables 7.1, 7.2) with rate effects and compaction: a concrete
+    // block, a steel projectile pressed into it (touching frictional contacts across the
+    // interface), every bond at the modulus of the rate cap, a patch of broken bonds squeezed
+    // shut (frictional contacts in stick), some bonds compacted. The kernel's bound, chosen at
+    // build for everything that can happen, must cover the measured top of this state.
+    use demsweep::kernel::law::compaction::CompactionSpec;
+    use demsweep::kernel::law::rate::RateSpec;
+    use demsweep::kernel::contacts::Bond;
+    use demsweep::material::PoissonPolicy;
+    use demsweep::units::psi_to_pa;
+    let (rc, rs) = (0.00635, 0.0039484);
+    let mut concrete = common::elastic(psi_to_pa(3122e3), 0.2, 2320.0);
+    concrete.tensile_strength_pa = psi_to_pa(300.0);
+    concrete.compressive_strength_pa = psi_to_pa(3000.0);
+    concrete.fracture_toughness_pa_sqrt_m = 1.0e6;
+    concrete.failure = demsweep::material::FailureCriterion::StrengthEnergy;
+    concrete.rate = Some(RateSpec { cap_per_s: Some(2e4), ..Default::default() });
+    concrete.compaction = Some(CompactionSpec::default());
+    let mut steel = common::elastic(psi_to_pa(29_000e3), 0.3, 25_970.0);
+    steel.poisson_policy = PoissonPolicy::ClampToOneThird;
+    let mut b = ModelBuilder::new(Plane::Strain, 1.0);
+    let (c, s) = (b.add_material(concrete), b.add_material(steel));
+    let block = lattice::close_packed(&Rect { x_min_m: 0.0, x_max_m: 16.0 * 2.0 * rc, y_min_m: 0.0, y_max_m: 10.0 * 3f64.sqrt() * rc }, rc).unwrap();
+    let top = block.centres.iter().map(|p| p[1]).fold(0.0, f64::max);
+    let y0 = top + 0.85 * (rc + rs) - rs;
+    let proj = lattice::close_packed(&Rect { x_min_m: 0.15, x_max_m: 0.15 + 10.0 * rs, y_min_m: y0, y_max_m: y0 + 12.0 * rs }, rs).unwrap();
+    b.add_body("block", &block, Arrangement::ClosePacked, c, &[], [0.0; 3]);
+    b.add_body("projectile", &proj, Arrangement::ClosePacked, s, &[], [0.0; 3]);
+    let mut model = b.build().unwrap();
+    assert!(model.parts.rate && model.parts.compaction);
+    let bound = model.step_info.omega_bound_rad_per_s;
+    // Every bond at the rate cap's modulus (the larger of the tension and compression ratios).
+    let n_block = block.centres.len();
+    let st = &mut model.state;
+    for (k, x) in st.contacts.extra.iter_mut().enumerate() {
+        let class = &model.classes[st.contacts.list[k].class as usize];
+        if class.rate.enabled {
+            x.modulus_ratio = class.rate.max_modulus_ratio();
+            x.rate_per_s = class.rate.cap_per_s;
+        }
+    }
+    // A patch of broken bonds in the middle of the block, squeezed by 0.3 % so they touch.
+    let centre = [16.0 * rc, 5.0 * 3f64.sqrt() * rc];
+    let inside = |p: [f64; 3]| (p[0] - centre[0]).hypot(p[1] - centre[1]) < 4.0 * rc;
+    for e in 0..n_block {
+        if inside(st.pos[e]) {
+            st.pos[e][0] = centre[0] + 0.997 * (st.pos[e][0] - centre[0]);
+            st.pos[e][1] = centre[1] + 0.997 * (st.pos[e][1] - centre[1]);
+        }
+    }
+    let pos = st.pos.clone();
+    let mut broken = 0;
+    for c in st.contacts.list.iter_mut() {
+        if c.bond == Bond::Intact && inside(pos[c.i as usize]) && inside(pos[c.j as usize]) {
+            c.bond = Bond::Frictional;
+            broken += 1;
+        }
+    }
+    // Some bonds compacted: the rest length moved in (the spring stays Kn).
+    for c in st.contacts.list.iter_mut().filter(|c| c.bond == Bond::Intact).step_by(7) {
+        c.rest_m *= 0.8;
+    }
+    let touching_interface = st
+        .contacts
+        .list
+        .iter()
+        .filter(|c| (c.i as usize) < n_block && (c.j as usize) >= n_block)
+        .filter(|c| {
+            let (p, q) = (pos[c.i as usize], pos[c.j as usize]);
+            (q[0] - p[0]).hypot(q[1] - p[1]) < c.rest_m
+        })
+        .count();
+    let measured = stability::dense_top(&model.el, &model.state.pos, &model.state.contacts, &model.classes);
+    eprintln!(
+        "{} elements, {broken} broken bonds squeezed shut, {touching_interface} touching interface contacts: measured top {measured:.5e} rad/s, \
+         bound {bound:.5e} rad/s (ratio {:.4}; {})",
+        model.el.len(),
+        bound / measured,
+        model.step_info.detail
+    );
+    assert!(broken > 20 && touching_interface > 3, "the state must carry the contacts it is about");
+    assert!(bound >= measured, "bound {bound} below the measured top {measured}");
 }

@@ -42,7 +42,7 @@ fn killed_run(every_steps: u64, kill_at: usize) -> RunCheckpoint {
 #[test]
 fn a_resumed_run_writes_the_tables_of_an_uninterrupted_one() {
     let straight = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
-    let checkpoint = killed_run(3000, 3);
+    let checkpoint = killed_run(5000, 3);
     let resumed = run::run_with(plate().build().unwrap(), run::Options { resume: Some(&checkpoint), ..Default::default() }).unwrap();
     let broken = |r: &run::RunResult| r.column("bonds_broken").unwrap();
     let at_kill = broken(&straight)[checkpoint.values.len() - 1];
@@ -97,4 +97,55 @@ fn demsweep_run_resume_continues_a_killed_run_and_removes_its_checkpoint() {
     assert!(stderr.contains("checkpoint.bin") && stderr.contains("truncated"), "{stderr}");
     assert!(run_dir("damaged").join("checkpoint.bin").exists() && !run_dir("damaged").join("series.csv").exists());
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Ends the run once `bonds` bonds have broken; counts its looks (state it must carry across a
+/// resume).
+struct BrokenBonds {
+    bonds: u64,
+    looks: u64,
+}
+
+impl run::StopRule for BrokenBonds {
+    fn every_steps(&self) -> u64 {
+        50
+    }
+    fn check(&mut self, m: &demsweep::kernel::Model) -> Option<String> {
+        self.looks += 1;
+        (m.state.ledger.bonds_broken() >= self.bonds).then(|| format!("settled after {} looks", self.looks))
+    }
+    fn save(&self) -> Vec<u8> {
+        self.looks.to_le_bytes().to_vec()
+    }
+    fn load(&mut self, bytes: &[u8]) -> demsweep::Result<()> {
+        self.looks = u64::from_le_bytes(bytes.try_into().map_err(|_| Error::input("stop", "8 bytes expected"))?);
+        Ok(())
+    }
+}
+
+#[test]
+fn a_stop_rule_ends_a_run_early_and_a_resumed_run_ends_the_same_way() {
+    let mut rule = BrokenBonds { bonds: 10, looks: 0 };
+    let straight = run::run_with(plate().build().unwrap(), run::Options { stop: Some(&mut rule), ..Default::default() }).unwrap();
+    let cap = (plate().scene.duration_s / straight.summary.dt_s).ceil() as u64;
+    assert!(straight.summary.steps < cap && straight.summary.bonds_broken >= 10, "{:?}", straight.summary);
+    assert!(straight.summary.end_reason.starts_with("settled after"), "{}", straight.summary.end_reason);
+    // Killed after its first checkpoint, resumed with a fresh rule: the rule's count comes back.
+    let mut saved = Vec::new();
+    let mut save = |c: &RunCheckpoint| {
+        saved.push(c.to_bytes());
+        Err(Error::input("test", "killed"))
+    };
+    let mut first = BrokenBonds { bonds: 10, looks: 0 };
+    let options = run::Options { stop: Some(&mut first), checkpointing: Some(Checkpointing { every_steps: 4000, save: &mut save }), ..Default::default() };
+    assert!(run::run_with(plate().build().unwrap(), options).is_err());
+    let checkpoint = RunCheckpoint::from_bytes(&saved[0]).unwrap();
+    let mut again = BrokenBonds { bonds: 10, looks: 0 };
+    let resumed =
+        run::run_with(plate().build().unwrap(), run::Options { resume: Some(&checkpoint), stop: Some(&mut again), ..Default::default() }).unwrap();
+    assert_eq!(resumed.series, straight.series);
+    assert_eq!(timeless(&resumed.summary_table()), timeless(&straight.summary_table()));
+    // Without a rule the scene runs its whole duration.
+    let full = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
+    assert_eq!((full.summary.steps, full.summary.end_reason.as_str()), (cap, "duration"));
 }

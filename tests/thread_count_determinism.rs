@@ -26,3 +26,18 @@ fn bitwise_identical_for_1_2_and_8_threads_with_breaking_bonds() {
     let (again, _, _) = fingerprint(2, steps);
     assert!(again == fingerprint(2, steps).0, "run-to-run difference");
 }
+
+#[test]
+fn a_run_told_to_step_serially_gives_the_same_bits_inside_any_pool() {
+    // Inside a sweep each run steps on its own thread (Threading::Serial) while the pool runs
+    // other runs: the result must be the pool run's.
+    let pooled = fingerprint(2, 600).0;
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(8).build().unwrap();
+    let serial = pool.install(|| {
+        let mut m = common::impact::model();
+        m.threading = demsweep::kernel::Threading::Serial;
+        m.run_steps(600).unwrap();
+        common::impact::state_bits(&m)
+    });
+    assert!(serial == pooled, "a serial run differs from a pooled one");
+}

@@ -131,11 +131,12 @@ pub fn scene(level: u32) -> Result<Scene> {
         damping: Damping { points: vec![DampingPoint { omega_rad_per_s: r.forcing_rad_per_s, ratio: DAMPING_RATIO }], ..Default::default() },
         material: vec![Material::elastic("beam", MODULUS_PA, POISSON, DENSITY_KG_PER_M3)],
         body: vec![crate::scene::BodySpec {
+            shape: None,
             name: "beam".into(),
             material: "beam".into(),
             lattice: Arrangement::ClosePacked,
             element_radius_m: rad,
-            rect: Rect { x_min_m: -4.0 * rad, x_max_m: LENGTH_M, y_min_m: 0.0, y_max_m: height },
+            rect: Some(Rect { x_min_m: -4.0 * rad, x_max_m: LENGTH_M, y_min_m: 0.0, y_max_m: height }),
             velocity_mps: [0.0, 0.0],
             seed: 0,
             bond_gap_ratio: None,

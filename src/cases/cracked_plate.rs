@@ -119,9 +119,47 @@ impl Study {
     }
 }
 
-/// The handbook value (eq 4.3, corrected as SPEC §3 says), Pa.
+/// The handbook value (eq 4.3, corrected as SPEC §3 says), Pa: linear fracture mechanics for a
+/// long strip, not this square plate (see the module documentation).
 pub fn handbook_pa() -> f64 {
     crate::analysis::sent_critical_stress_pa(TOUGHNESS_PA_SQRT_M, CRACK_M, WIDTH_M)
+}
+
+/// The continuum references of this plate (`scripts/cohesive_sent.py`, plane-stress FE; the
+/// table `results/validation/cracked_plate_continuum.csv` is compiled in).
+const CONTINUUM_CSV: &str = include_str!("../../results/validation/cracked_plate_continuum.csv");
+
+/// Which continuum model.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Continuum {
+    /// Linear fracture mechanics (node release, Richardson-extrapolated in h).
+    Lefm,
+    /// The lattice's crack law as a cohesive line: σ_ult up to a fixed opening, G = 2.07 G_f
+    /// (finest mesh; converged to four digits).
+    Cohesive,
+}
+
+/// The continuum reference for the square plate under `grips` (rollers or uniform traction),
+/// Pa: what the energy criterion (cohesive) and the toughness criterion (LEFM) should converge
+/// to for this plate.
+pub fn continuum_pa(grips: Grips, model: Continuum) -> Option<f64> {
+    let grips = match grips {
+        Grips::UniformTraction => "traction",
+        Grips::Rollers => "rollers",
+        Grips::Clamped => return None,
+    };
+    let rows: Vec<Vec<&str>> = CONTINUUM_CSV.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    let height = |r: &Vec<&str>| r[1].parse::<f64>().is_ok_and(|h| (h - HEIGHT_M).abs() < 1e-12);
+    let pick = |r: &&Vec<&str>| {
+        r[0] == grips
+            && height(r)
+            && match model {
+                Continuum::Lefm => r[2] == "lefm" && r[4] == "richardson",
+                Continuum::Cohesive => r[2] == "cohesive" && r[3].parse::<f64>().is_ok_and(|g| (g - 2.07).abs() < 1e-9),
+            }
+    };
+    // The cohesive rows come coarse to fine: the last is the finest.
+    rows.iter().rfind(pick).and_then(|r| r[6].parse().ok())
 }
 
 /// How the top and bottom edges are pulled apart.
@@ -224,11 +262,12 @@ pub fn scene(study: Study, level: u32, cracked: bool, setup: &Setup) -> Scene {
             concrete(study.failure()),
         ],
         body: vec![BodySpec {
+            shape: None,
             name: "plate".into(),
             material: "concrete".into(),
             lattice: study.arrangement(),
             element_radius_m: r,
-            rect: Rect { x_min_m: 0.0, x_max_m: WIDTH_M, y_min_m: 0.0, y_max_m: height },
+            rect: Some(Rect { x_min_m: 0.0, x_max_m: WIDTH_M, y_min_m: 0.0, y_max_m: height }),
             velocity_mps: [0.0, 0.0],
             seed: 0,
             bond_gap_ratio: None,

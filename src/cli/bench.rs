@@ -1,12 +1,17 @@
-//! `demsweep bench`: the kernel's speed on the benchmark block, one thread and all threads.
+//! `demsweep bench`: the kernel's speed on the benchmark workloads, one thread and all threads.
 
-use crate::bench::{self, COLUMNS, ROWS};
+use crate::bench::{self, COLUMNS, Figures, ROWS, Workload};
 use crate::error::{Error, Result};
 
 /// Arguments of `demsweep bench`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Steps per timed repeat.
+    /// Workload: the all-bonded block, or the projectile at 1500 ft/s into the breakable block
+    /// (which is measured beside the block, in the same run, and compared with it).
+    #[arg(long, value_enum, default_value = "block")]
+    pub workload: Workload,
+    /// Steps per timed repeat of the block (the impact runs while its nose crosses the first
+    /// 20 % of the block).
     #[arg(long, default_value_t = 500)]
     pub steps: u64,
     /// Timed repeats (the median is reported).
@@ -17,6 +22,22 @@ pub struct Args {
     pub threads: Vec<usize>,
 }
 
+fn row(name: &str, f: &Figures) {
+    println!(
+        "{name:>7}  {:>7}  {:>8}  {:>9.0}  {:>7.3}   {:>15.2}  ({:.2}–{:.2})  {:>14.4e}  {:>8.1} ({:.1})",
+        f.threads,
+        f.elements,
+        f.contacts,
+        f.step_s * 1e3,
+        f.ns_per_contact_step,
+        f.range_ns.0,
+        f.range_ns.1,
+        f.element_steps_per_s,
+        f.rebuilds_per_1000,
+        f.local_updates_per_1000
+    );
+}
+
 /// Run the benchmark and print its figures.
 pub fn run(args: Args) -> Result<()> {
     if args.steps == 0 || args.repeats == 0 {
@@ -24,26 +45,36 @@ pub fn run(args: Args) -> Result<()> {
     }
     let all = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
     let threads = if args.threads.is_empty() { if all > 1 { vec![1, all] } else { vec![1] } } else { args.threads };
-    println!("demsweep bench: close-packed block {COLUMNS} × {ROWS}, all bonds intact, undamped, median of {} × {} steps", args.repeats, args.steps);
-    println!("threads  elements  contacts  ms/step   ns/contact-step  (min–max)      element-steps/s");
-    let mut single = None;
-    for t in threads {
-        let f = bench::measure(COLUMNS, ROWS, args.steps, args.repeats, t)?;
-        println!(
-            "{:>7}  {:>8}  {:>8}  {:>7.3}   {:>15.2}  ({:.2}–{:.2})  {:>14.4e}",
-            f.threads,
-            f.elements,
-            f.contacts,
-            f.step_s * 1e3,
-            f.ns_per_contact_step,
-            f.range_ns.0,
-            f.range_ns.1,
-            f.element_steps_per_s
-        );
-        if t == 1 {
-            single = Some(f.step_s);
-        } else if let Some(s1) = single {
-            println!("         speed-up over 1 thread: {:.2} (parallel efficiency {:.0} %)", s1 / f.step_s, 100.0 * s1 / f.step_s / t as f64);
+    let workloads: &[Workload] = match args.workload {
+        Workload::Block => &[Workload::Block],
+        Workload::Impact => &[Workload::Block, Workload::Impact],
+    };
+    println!(
+        "demsweep bench: close-packed block {COLUMNS} × {ROWS}{}; median of {} repeats",
+        if args.workload == Workload::Impact { ", and the seed's projectile at 1500 ft/s through 20 % of it" } else { ", all bonds intact, undamped" },
+        args.repeats
+    );
+    println!("   work  threads  elements  contacts  ms/step   ns/contact-step  (min–max)      element-steps/s  rebuilds (local) /1000 steps");
+    let mut single: Vec<(Workload, f64)> = Vec::new();
+    for &t in &threads {
+        let mut block = None;
+        for &w in workloads {
+            let f = bench::measure(w, COLUMNS, ROWS, args.steps, args.repeats, t)?;
+            row(if w == Workload::Block { "block" } else { "impact" }, &f);
+            if let (Workload::Impact, Some(b)) = (w, block) {
+                let b: Figures = b;
+                println!("         impact / block, ns per contact-step: {:.3} ({} steps)", f.ns_per_contact_step / b.ns_per_contact_step, f.steps);
+            }
+            if w == Workload::Block {
+                block = Some(f);
+            }
+            match single.iter().find(|s| s.0 == w) {
+                Some(&(_, s1)) if t > 1 => {
+                    println!("         speed-up over 1 thread: {:.2} (parallel efficiency {:.0} %)", s1 / f.step_s, 100.0 * s1 / f.step_s / t as f64)
+                }
+                None if t == 1 => single.push((w, f.step_s)),
+                _ => {}
+            }
         }
     }
     Ok(())

@@ -59,7 +59,7 @@ pub struct ModelBuilder {
     pub step: StepChoice,
     /// Also resolve the shortest binary collision with at least this many steps (None: off).
     pub collision_steps: Option<f64>,
-    /// Neighbour skin as a fraction of the smallest radius.
+    /// Neighbour skin as a fraction of each element's radius (see `neighbours`).
     pub skin_ratio: f64,
     /// Blow-up speed limit, m/s (None: 10 × the largest wave or initial speed).
     pub speed_limit_mps: Option<f64>,
@@ -86,7 +86,7 @@ impl ModelBuilder {
             gravity_mps2: [0.0, 0.0],
             step: StepChoice::Auto { safety: 0.9 },
             collision_steps: None,
-            skin_ratio: 0.25,
+            skin_ratio: neighbours::SKIN_RATIO,
             speed_limit_mps: None,
             damp_relative_to_rigid: false,
             materials: Vec::new(),
@@ -258,9 +258,10 @@ impl ModelBuilder {
         let extra = if parts.needs_extra() { list.iter().map(|c| Extra::new(c.rest_m)).collect() } else { Vec::new() };
         let contacts = Contacts::from_list(list, extra);
 
-        let r_min = el.radius.iter().copied().fold(f64::INFINITY, f64::min);
         let r_max = el.radius.iter().copied().fold(0.0, f64::max);
-        let (mut omega, mut how) = frequency_bound(&el, &pos, &contacts.list, &classes, &self.kinds, &self.bodies, nk);
+        let kind_info: Vec<stability::KindInfo> =
+            self.kinds.iter().map(|k| stability::KindInfo { arrangement: k.arrangement, radius_m: k.radius_m, mass_kg: k.mass_kg }).collect();
+        let (mut omega, mut how) = stability::model_bound(&el, &pos, &contacts.list, &classes, &kind_info, &self.bodies);
         // A servo grip adds the rank-one stiffness (k/n²) 1 1ᵀ on its members: by Weyl's
         // inequality it raises ω_max² by at most k / (group mass); groups are disjoint.
         let servo = self
@@ -326,6 +327,7 @@ impl ModelBuilder {
             ledger: Default::default(),
             steps: 0,
             rebuilds: 0,
+            local_updates: 0,
         };
         let mut model = Model {
             el,
@@ -336,7 +338,7 @@ impl ModelBuilder {
             motions: self.motions,
             loads: self.loads,
             motion: MotionParams { dt_s: dt, alpha_per_s: self.alpha_per_s, gravity_mps2: self.gravity_mps2, speed_limit_mps: speed_limit },
-            neighbours: neighbours::Settings::new(self.skin_ratio, r_min, r_max),
+            neighbours: neighbours::Settings::new(self.skin_ratio, r_max),
             damp_relative_to_rigid: self.damp_relative_to_rigid,
             step_info: StepInfo {
                 omega_bound_rad_per_s: omega,
@@ -369,69 +371,4 @@ fn collision_time_s(classes: &[ContactClass], kinds: &[Kind], nk: usize) -> f64 
         }
     }
     t
-}
-
-/// Bound on the top frequency over all bodies, rad/s, and how it was obtained. A body that is a
-/// regular lattice of one kind gets the infinite lattice's exact top (a rigorous bound for any
-/// subset of it); other bodies get the Gershgorin bound of their assembled contacts; a body
-/// without bonds (loose disks) is bounded as if close-packed, its densest possible contact
-/// network.
-fn frequency_bound(
-    el: &Elements,
-    pos: &[[f64; 3]],
-    list: &[Contact],
-    classes: &[ContactClass],
-    kinds: &[Kind],
-    bodies: &[Body],
-    nk: usize,
-) -> (f64, String) {
-    let mut best = (0.0f64, String::new());
-    for b in bodies {
-        let body_kinds: Vec<u16> = {
-            let mut v: Vec<u16> = el.kind[b.elements.clone()].to_vec();
-            v.sort_unstable();
-            v.dedup();
-            v
-        };
-        let has_bonds = list.iter().any(|c| b.elements.contains(&(c.i as usize)));
-        // Regular: one lattice of identical elements and identical springs. Kinds that differ
-        // only in strength (e.g. an unbreakable platen) are still one lattice for stiffness.
-        let k0 = body_kinds[0] as usize;
-        let same = |k: usize| {
-            let (a, z) = (&kinds[k], &kinds[k0]);
-            a.arrangement == z.arrangement && a.radius_m == z.radius_m && a.mass_kg == z.mass_kg
-        };
-        let springs = |a: usize, b: usize| {
-            let s = classes[a * nk + b].stiffest_bond();
-            (s.kn_n_per_m, s.kt_n_per_m)
-        };
-        let regular = kinds[k0].arrangement != Arrangement::Irregular
-            && body_kinds.iter().all(|&k| same(k as usize))
-            && body_kinds.iter().all(|&a| body_kinds.iter().all(|&c| springs(a as usize, c as usize) == springs(k0, k0)));
-        let (omega, how) = if !has_bonds || regular {
-            let mut w = 0.0f64;
-            let mut how = String::new();
-            for &k in &body_kinds {
-                let kind = &kinds[k as usize];
-                let c = classes[k as usize * nk + k as usize].stiffest_bond();
-                let arrangement = if has_bonds { kind.arrangement } else { Arrangement::ClosePacked };
-                let coef = stability::lattice_coefficient(arrangement, c.kt_n_per_m / c.kn_n_per_m, 0.5);
-                let wk = coef * (c.kn_n_per_m / kind.mass_kg).sqrt();
-                if wk > w {
-                    w = wk;
-                    how = format!("infinite {arrangement:?} lattice top {coef:.4} √(Kn/m) (body {})", b.name);
-                }
-            }
-            (w, how)
-        } else {
-            let mask: Vec<Contact> =
-                list.iter().copied().filter(|c| b.elements.contains(&(c.i as usize)) || b.elements.contains(&(c.j as usize))).collect();
-            let (w, s) = stability::gershgorin(el, pos, &mask, classes);
-            (w, format!("Gershgorin, rotation scale {s:.3} (body {})", b.name))
-        };
-        if omega > best.0 {
-            best = (omega, how);
-        }
-    }
-    best
 }

@@ -143,7 +143,9 @@ impl Contacts {
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's
-    /// candidate `pairs` (sorted by (i, j)). Kept with their history: intact bonds (always) and
+    /// candidate `pairs` (sorted by (i, j)), which are all the candidates among the pairs for
+    /// which `covered(i, j)` (every pair after a full search, the movers' after a local one;
+    /// the contacts of the other pairs are kept as they are). Kept with their history: intact bonds (always) and
     /// frictional contacts that are still candidates or still touch (`touching(c)`; a candidate
     /// that is apart is kept too: the contact loop lets it forget, so the physics does not
     /// depend on when lists are rebuilt). Any other frictional contact is dropped; what its shear spring
@@ -154,6 +156,7 @@ impl Contacts {
     pub fn merge_candidates(
         &mut self,
         pairs: &[(u32, u32)],
+        covered: impl Fn(u32, u32) -> bool,
         touching: impl Fn(&Contact) -> bool,
         fresh: impl Fn(u32, u32) -> Contact,
         fresh_extra: impl Fn(u32, u32) -> Extra,
@@ -172,7 +175,7 @@ impl Contacts {
             let kb = pairs.get(b).map_or(u64::MAX, |&(i, j)| ((i as u64) << 32) | j as u64);
             if ka <= kb {
                 let c = old[a];
-                if c.bond == Bond::Intact || ka == kb || touching(&c) {
+                if c.bond == Bond::Intact || ka == kb || !covered(c.i, c.j) || touching(&c) {
                     self.merged.push(c);
                     if with_extra {
                         self.merged_extra.push(self.extra[a]);
@@ -228,6 +231,7 @@ mod tests {
         // (2,3) is no longer a candidate: dropped, its spring booked. (1,2) new. (0,3) kept.
         c.merge_candidates(
             &[(0, 3), (1, 2)],
+            |_, _| true,
             |_| false,
             |i, j| Contact::frictional(i, j, 7, 2.0),
             |_, _| Extra::new(0.0),

@@ -17,6 +17,10 @@ pub struct BroadPhase {
     keyed: Vec<(u64, u32)>,
     pairs: Vec<u64>,
     wide: Vec<u32>,
+    count: Vec<u32>,
+    fill: Vec<u32>,
+    /// 1 / cell size of the last full search, 1/m.
+    inv_cell: f64,
 }
 
 /// Cell coordinates are clamped to this range, so that a neighbour (±k) never aliases a cell.
@@ -27,11 +31,23 @@ fn cell_key(cx: i64, cy: i64) -> u64 {
     (offset(cy) << 32) | offset(cx)
 }
 
+fn cell_coords(key: u64) -> (i64, i64) {
+    ((key & 0xffff_ffff) as i64 + i32::MIN as i64, (key >> 32) as i64 + i32::MIN as i64)
+}
+
 impl BroadPhase {
     /// All pairs (i < j) with |c_i − c_j| < r_i + r_j + m_i + m_j, sorted by (i, j), written to
     /// `out` (cleared first); `centre(e)` gives element e's centre [x m, y m] for e < r.len(),
-    /// `margin(e)` its margin, m.
-    pub fn pairs(&mut self, centre: impl Fn(usize) -> [f64; 2], r: &[f64], margin: impl Fn(usize) -> f64, out: &mut Vec<(u32, u32)>) {
+    /// `margin(e)` its margin, m. Cells are sized for the reach r + m of most elements
+    /// (`usual_reach_m`; None: the largest radius plus the smallest margin).
+    pub fn pairs(
+        &mut self,
+        centre: impl Fn(usize) -> [f64; 2],
+        r: &[f64],
+        margin: impl Fn(usize) -> f64,
+        usual_reach_m: Option<f64>,
+        out: &mut Vec<(u32, u32)>,
+    ) {
         out.clear();
         let n = r.len();
         if n < 2 {
@@ -39,23 +55,30 @@ impl BroadPhase {
         }
         // Cells are sized for the usual reach: the largest radius plus the smallest margin
         // (most elements have it).
-        let r_max = r.iter().copied().fold(0.0, f64::max);
-        let m_min = (0..n).map(&margin).fold(f64::INFINITY, f64::min);
-        let usual = r_max + m_min;
+        let usual = usual_reach_m.unwrap_or_else(|| {
+            let r_max = r.iter().copied().fold(0.0, f64::max);
+            r_max + (0..n).map(&margin).fold(f64::INFINITY, f64::min)
+        });
         let cell = 2.0 * usual;
         let inv = 1.0 / cell;
+        self.inv_cell = inv;
         let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
         let cell_of = |c: [f64; 2]| (clamp(c[0]), clamp(c[1]));
-        self.keyed.clear();
-        self.wide.clear();
-        for e in 0..n {
-            let (cx, cy) = cell_of(centre(e));
-            self.keyed.push((cell_key(cx, cy), e as u32));
-            if r[e] + margin(e) > usual {
-                self.wide.push(e as u32);
-            }
+        // Key the elements in the order of the last call: elements move little between
+        // rebuilds, so the keys come nearly sorted and the (adaptive, stable) sort is cheap.
+        // (key, element) pairs are distinct, so the order is the same whatever the sort.
+        if self.keyed.len() != n {
+            self.keyed.clear();
+            self.keyed.extend((0..n as u32).map(|e| (0, e)));
         }
-        self.keyed.sort_unstable();
+        self.wide.clear();
+        for k in self.keyed.iter_mut() {
+            let e = k.1 as usize;
+            let (cx, cy) = cell_of(centre(e));
+            k.0 = cell_key(cx, cy);
+        }
+        self.keyed.sort();
+        self.wide.extend((0..n).filter(|&e| r[e] + margin(e) > usual).map(|e| e as u32));
         self.pairs.clear();
         let keys = &self.keyed;
         let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
@@ -71,19 +94,29 @@ impl BroadPhase {
             }
         };
         // Usual–usual pairs: forward half-stencil (rest of own cell and (cx+1, cy), then the
-        // three cells above); two usual reaches never exceed one cell.
+        // three cells above); two usual reaches never exceed one cell. The elements come in
+        // key order, so the stencil's bounds only move forward: three pointers, no search.
+        let (mut same_end, mut above_start, mut above_end) = (0usize, 0usize, 0usize);
         for s in 0..n {
-            let (_, a) = keys[s];
+            let (key, a) = keys[s];
             let a = a as usize;
+            let (cx, cy) = cell_coords(key);
+            let (k_same, k_lo, k_hi) = (cell_key(cx + 1, cy), cell_key(cx - 1, cy + 1), cell_key(cx + 1, cy + 1));
+            while same_end < n && keys[same_end].0 <= k_same {
+                same_end += 1;
+            }
+            while above_start < n && keys[above_start].0 < k_lo {
+                above_start += 1;
+            }
+            above_end = above_end.max(above_start);
+            while above_end < n && keys[above_end].0 <= k_hi {
+                above_end += 1;
+            }
             if is_wide(a) {
                 continue;
             }
             let ca = centre(a);
-            let (cx, cy) = cell_of(ca);
-            let same_row_end = upper(cell_key(cx + 1, cy));
-            let above_start = lower(cell_key(cx - 1, cy + 1));
-            let above_end = upper(cell_key(cx + 1, cy + 1));
-            for &(_, b) in keys[s + 1..same_row_end].iter().chain(&keys[above_start..above_end]) {
+            for &(_, b) in keys[s + 1..same_end].iter().chain(&keys[above_start..above_end]) {
                 if !is_wide(b as usize) {
                     test(a, b as usize, ca, &mut self.pairs);
                 }
@@ -107,9 +140,83 @@ impl BroadPhase {
                 }
             }
         }
+        // Sort by (i, j): a counting sort on i, then each i's few partners in place.
+        self.count.clear();
+        self.count.resize(n + 1, 0);
+        for &p in &self.pairs {
+            self.count[(p >> 32) as usize + 1] += 1;
+        }
+        for e in 0..n {
+            self.count[e + 1] += self.count[e];
+        }
+        out.resize(self.pairs.len(), (0, 0));
+        self.fill.clear();
+        self.fill.extend_from_slice(&self.count[..n]);
+        for &p in &self.pairs {
+            let i = (p >> 32) as usize;
+            out[self.fill[i] as usize] = (i as u32, p as u32);
+            self.fill[i] += 1;
+        }
+        for e in 0..n {
+            out[self.count[e] as usize..self.count[e + 1] as usize].sort_unstable();
+        }
+    }
+    /// After a full [`BroadPhase::pairs`]: the elements `movers` (flagged in `is_mover`) have
+    /// new centres (and margins); re-key them, and write to `out` every pair (i < j, sorted)
+    /// that involves a mover and satisfies the same reach test, where `widest_m` bounds r + m
+    /// of every element. Pairs between two other elements are not looked at.
+    #[allow(clippy::too_many_arguments)]
+    pub fn requery(
+        &mut self,
+        movers: &[u32],
+        is_mover: &[bool],
+        centre: impl Fn(usize) -> [f64; 2],
+        r: &[f64],
+        margin: impl Fn(usize) -> f64,
+        widest_m: f64,
+        out: &mut Vec<(u32, u32)>,
+    ) {
+        out.clear();
+        let inv = self.inv_cell;
+        let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
+        let cell_of = |c: [f64; 2]| (clamp(c[0]), clamp(c[1]));
+        for k in self.keyed.iter_mut() {
+            if is_mover[k.1 as usize] {
+                let (cx, cy) = cell_of(centre(k.1 as usize));
+                k.0 = cell_key(cx, cy);
+            }
+        }
+        self.keyed.sort();
+        let keys = &self.keyed;
+        let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
+        let upper = |k: u64| keys.partition_point(|&(kk, _)| kk <= k);
+        self.pairs.clear();
+        for &a in movers {
+            let a = a as usize;
+            let ca = centre(a);
+            let (cx, cy) = cell_of(ca);
+            let k = ((r[a] + margin(a) + widest_m) * inv).ceil() as i64;
+            for y in cy - k..=cy + k {
+                for &(_, b) in &keys[lower(cell_key(cx - k, y))..upper(cell_key(cx + k, y))] {
+                    let b = b as usize;
+                    if b == a {
+                        continue;
+                    }
+                    let cb = centre(b);
+                    let (dx, dy) = (cb[0] - ca[0], cb[1] - ca[1]);
+                    let reach = (r[a] + r[b]) + (margin(a) + margin(b));
+                    if dx * dx + dy * dy < reach * reach {
+                        let (i, j) = if a < b { (a, b) } else { (b, a) };
+                        self.pairs.push(((i as u64) << 32) | j as u64);
+                    }
+                }
+            }
+        }
         self.pairs.sort_unstable();
+        self.pairs.dedup();
         out.extend(self.pairs.iter().map(|&p| ((p >> 32) as u32, p as u32)));
     }
+
 }
 
 #[cfg(test)]
@@ -130,7 +237,7 @@ mod tests {
     }
 
     #[test]
-    fn matches_brute_force_including_far_away_elements() {
+    fn matches_brute_force_including_far_away_elements_and_after_a_local_update() {
         let mut s = 12345u64;
         let mut rnd = || {
             s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
@@ -148,12 +255,30 @@ mod tests {
         x[11] = -3e12;
         let mut bp = BroadPhase::default();
         let mut out = vec![];
-        bp.pairs(|e| [x[e], y[e]], &r, |_| 0.001, &mut out);
+        bp.pairs(|e| [x[e], y[e]], &r, |_| 0.001, None, &mut out);
         assert_eq!(out, brute(&x, &y, &r, |_| 0.001));
         assert!(out.contains(&(3, 7)));
         // Per-element margins, some elements reaching several cells further than the rest.
-        let m = |e: usize| if e % 17 == 0 { 0.03 + 0.001 * (e % 5) as f64 } else { 0.0005 + 0.0001 * (e % 3) as f64 };
-        bp.pairs(|e| [x[e], y[e]], &r, m, &mut out);
+        let m = |e: usize| if e.is_multiple_of(17) { 0.03 + 0.001 * (e % 5) as f64 } else { 0.0005 + 0.0001 * (e % 3) as f64 };
+        bp.pairs(|e| [x[e], y[e]], &r, m, None, &mut out);
         assert_eq!(out, brute(&x, &y, &r, m));
+        bp.pairs(|e| [x[e], y[e]], &r, m, Some(0.012), &mut out);
+        assert_eq!(out, brute(&x, &y, &r, m));
+        // Move some elements (far, and a little) and requery them alone: with the pairs of the
+        // others from before, the union is the full search at the new positions.
+        let movers: Vec<u32> = (0..n as u32).filter(|e| e % 7 == 3).collect();
+        let mut is_mover = vec![false; n];
+        movers.iter().for_each(|&e| is_mover[e as usize] = true);
+        for &e in &movers {
+            x[e as usize] += 0.003 * (e % 5) as f64 - 0.006;
+            y[e as usize] -= 0.002 * (e % 3) as f64;
+        }
+        x[3] = 5.0;
+        let widest = (0..n).map(|e| r[e] + m(e)).fold(0.0, f64::max);
+        let mut moved = vec![];
+        bp.requery(&movers, &is_mover, |e| [x[e], y[e]], &r, m, widest, &mut moved);
+        let mut union: Vec<(u32, u32)> = out.iter().copied().filter(|&(i, j)| !is_mover[i as usize] && !is_mover[j as usize]).chain(moved).collect();
+        union.sort_unstable();
+        assert_eq!(union, brute(&x, &y, &r, m));
     }
 }

@@ -94,6 +94,8 @@ struct Scratch {
     frame_scratch: Vec<[f64; 5]>,
     /// Per-element contact force sums of stage 1 when it runs on one thread (else empty).
     contact_sums: Vec<[f64; 3]>,
+    movers: Vec<u32>,
+    is_mover: Vec<bool>,
 }
 
 /// A model ready to step.
@@ -319,19 +321,71 @@ impl Model {
 
     /// New pairs can only come within reach once some element has moved past its margin: until
     /// then the candidate list is complete (each contact checks touching itself every step).
+    /// A few such elements get a local update, many a full rebuild. The update takes every
+    /// element past half its margin along, so the ones about to trigger the next update do not.
     fn detect_contacts(&mut self, drifted: bool) {
-        if drifted {
+        if !drifted {
+            return;
+        }
+        let (st, s) = (&self.state, &mut self.scratch);
+        s.movers.clear();
+        s.movers.extend((0..self.el.len() as u32).filter(|&e| {
+            let (p, g, m) = (st.pos[e as usize], st.rebuild_pos[e as usize], st.margin_m[e as usize]);
+            (p[0] - g[0]).powi(2) + (p[1] - g[1]).powi(2) > 0.25 * m * m
+        }));
+        if self.neighbours.local(s.movers.len(), self.el.len()) {
+            self.update_neighbours();
+        } else {
             self.rebuild_neighbours();
         }
+    }
+
+    /// The local update: new margins and reference positions for the movers, their pairs looked
+    /// for again, everything else kept.
+    fn update_neighbours(&mut self) {
+        let (st, s) = (&mut self.state, &mut self.scratch);
+        s.is_mover.clear();
+        s.is_mover.resize(self.el.len(), false);
+        for &a in &s.movers {
+            let a = a as usize;
+            s.is_mover[a] = true;
+            st.rebuild_pos[a] = [st.pos[a][0], st.pos[a][1]];
+            st.margin_m[a] = self.neighbours.margin_m(&self.el, a, st.vel[a], st.force[a], self.motion.dt_s);
+        }
+        let (r, margin, refs) = (&self.el.radius, &st.margin_m, &st.rebuild_pos);
+        let widest = r.iter().zip(margin).map(|(r, m)| r + m).fold(0.0, f64::max);
+        s.broad.requery(&s.movers, &s.is_mover, |e| refs[e], r, |e| margin[e], widest, &mut s.pairs);
+        let is_mover = &s.is_mover;
+        let covered = |i: u32, j: u32| is_mover[i as usize] || is_mover[j as usize];
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, &mut st.contacts, &mut st.ledger);
+        st.local_updates += 1;
     }
 
     /// Rebuild the candidate pairs from the current positions (margins, broad phase, merge).
     pub fn rebuild_neighbours(&mut self) {
         let (st, s) = (&mut self.state, &mut self.scratch);
-        self.neighbours.margins(&self.el, &st.vel, self.motion.dt_s, &mut st.margin_m);
+        self.neighbours.margins(&self.el, &st.vel, &st.force, self.motion.dt_s, &mut st.margin_m);
         let (pos, margin) = (&st.pos, &st.margin_m);
-        s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], &mut s.pairs);
-        let (el, classes, kinds) = (&self.el, &self.classes, self.kinds);
+        let usual = self.neighbours.usual_reach_m(self.el.radius.iter().copied().fold(0.0, f64::max));
+        s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], Some(usual), &mut s.pairs);
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, &mut st.contacts, &mut st.ledger);
+        st.rebuild_pos.clear();
+        st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
+        st.rebuilds += 1;
+    }
+
+    /// Merge the candidate `pairs` (complete for the `covered` pairs) into the contacts.
+    #[allow(clippy::too_many_arguments)]
+    fn merge(
+        el: &Elements,
+        classes: &[ContactClass],
+        kinds: usize,
+        pos: &[[f64; 3]],
+        pairs: &[(u32, u32)],
+        covered: impl Fn(u32, u32) -> bool,
+        contacts: &mut contacts::Contacts,
+        ledger: &mut energy::Ledger,
+    ) {
         let touching = |c: &contacts::Contact| {
             let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
             (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.rest_m * c.rest_m
@@ -345,11 +399,8 @@ impl Model {
         let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
         let release = |c: &contacts::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
         let mut released = Dissipation::default();
-        st.contacts.merge_candidates(&s.pairs, touching, fresh, fresh_extra, admit, release, &mut released, el.len());
-        st.ledger.contacts.add(&released);
-        st.rebuild_pos.clear();
-        st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
-        st.rebuilds += 1;
+        contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, el.len());
+        ledger.contacts.add(&released);
     }
 
     /// Kinetic energy, J (velocities at the half step).

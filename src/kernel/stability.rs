@@ -27,6 +27,7 @@
 
 use nalgebra::{DMatrix, Matrix6, SymmetricEigen};
 
+use super::Body;
 use super::contacts::{Bond, Contact, Contacts};
 use super::law::{ContactClass, Extra, Springs};
 use super::state::Elements;
@@ -156,6 +157,107 @@ pub fn gershgorin(el: &Elements, pos: &[[f64; 3]], list: &[Contact], classes: &[
     // Any s gives a valid bound; evaluate at the one found (and never above s = 1's).
     let best = bound(s).min(bound(1.0));
     (best.sqrt(), s)
+}
+
+/// What the bound needs of an element kind.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct KindInfo {
+    /// Lattice of its body.
+    pub arrangement: Arrangement,
+    /// Radius, m.
+    pub radius_m: f64,
+    /// Mass, kg.
+    pub mass_kg: f64,
+}
+
+/// Bound on the top frequency of everything the model can become, rad/s, and what sets it.
+/// The largest of:
+/// * each body's bonds at their stiffest (rate-enhanced moduli at the rate cap; full
+///   compaction returns to the initial Kn): a regular lattice of one kind gets the infinite
+///   lattice's exact top, a rigorous bound for any subset of it; other bodies the Gershgorin
+///   bound of their assembled bonds;
+/// * each body whose bonds can break, or that has none (loose disks): its fragments packed in
+///   the densest network there is, a close-packed lattice of its elements joined by frictional
+///   contacts in stick (Kt = Kn/3);
+/// * each pair of kinds of different bodies (the projectile–target interface): the same
+///   close-packed lattice of elements of the pair's reduced mass, 2/(1/m_a + 1/m_b), joined by
+///   the interface's contact springs. This one is an estimate, not a proof (the interface is a
+///   line, not a lattice); `tests/frequency_bound.rs` holds it against the measured top of a
+///   projectile pressed into a block.
+///
+/// Not covered: elements brought closer than r_i + r_j by compaction can touch more neighbours
+/// than a close packing has.
+pub fn model_bound(
+    el: &Elements,
+    pos: &[[f64; 3]],
+    list: &[Contact],
+    classes: &[ContactClass],
+    kinds: &[KindInfo],
+    bodies: &[Body],
+) -> (f64, String) {
+    let nk = kinds.len();
+    let class = |a: usize, b: usize| &classes[a * nk + b];
+    let mut best = (0.0f64, String::new());
+    let mut consider = |w: f64, how: String| {
+        if w > best.0 {
+            best = (w, how);
+        }
+    };
+    let lattice_top = |arrangement: Arrangement, s: Springs, mass_kg: f64| {
+        let coef = lattice_coefficient(arrangement, s.kt_n_per_m / s.kn_n_per_m, 0.5);
+        (coef * (s.kn_n_per_m / mass_kg).sqrt(), coef)
+    };
+    let body_kinds: Vec<Vec<usize>> = bodies
+        .iter()
+        .map(|b| {
+            let mut v: Vec<usize> = el.kind[b.elements.clone()].iter().map(|&k| k as usize).collect();
+            v.sort_unstable();
+            v.dedup();
+            v
+        })
+        .collect();
+    for (b, ks) in bodies.iter().zip(&body_kinds) {
+        let bonds: Vec<Contact> = list.iter().copied().filter(|c| b.elements.contains(&(c.i as usize))).collect();
+        if !bonds.is_empty() {
+            // Regular: one lattice of identical elements and identical springs. Kinds that
+            // differ only in strength (e.g. an unbreakable platen) are still one lattice.
+            let k0 = ks[0];
+            let same = |k: usize| {
+                let (a, z) = (&kinds[k], &kinds[k0]);
+                a.arrangement == z.arrangement && a.radius_m == z.radius_m && a.mass_kg == z.mass_kg
+            };
+            let springs = |a: usize, c: usize| class(a, c).stiffest_bond();
+            let regular = kinds[k0].arrangement != Arrangement::Irregular
+                && ks.iter().all(|&k| same(k))
+                && ks.iter().all(|&a| ks.iter().all(|&c| springs(a, c) == springs(k0, k0)));
+            if regular {
+                let (w, coef) = lattice_top(kinds[k0].arrangement, springs(k0, k0), kinds[k0].mass_kg);
+                consider(w, format!("infinite {:?} lattice top {coef:.4} √(Kn/m) of the bonds of body {}", kinds[k0].arrangement, b.name));
+            } else {
+                let (w, s) = gershgorin(el, pos, &bonds, classes);
+                consider(w, format!("Gershgorin bound of the bonds of body {} (rotation scale {s:.3})", b.name));
+            }
+        }
+        let breakable = ks.iter().any(|&a| ks.iter().any(|&c| class(a, c).strength.normal_force_n.is_finite()));
+        if bonds.is_empty() || breakable {
+            for &k in ks {
+                let (w, coef) = lattice_top(Arrangement::ClosePacked, class(k, k).stiffest_contact(), kinds[k].mass_kg);
+                consider(w, format!("close-packed fragments of body {} in stick, {coef:.4} √(Kn/m)", b.name));
+            }
+        }
+    }
+    for (p, kp) in body_kinds.iter().enumerate() {
+        for (q, kq) in body_kinds.iter().enumerate().skip(p + 1) {
+            for &a in kp {
+                for &c in kq {
+                    let m = 2.0 / (1.0 / kinds[a].mass_kg + 1.0 / kinds[c].mass_kg);
+                    let (w, coef) = lattice_top(Arrangement::ClosePacked, class(a, c).stiffest_contact(), m);
+                    consider(w, format!("interface of bodies {} and {} (estimate {coef:.4} √(Kn/m_reduced))", bodies[p].name, bodies[q].name));
+                }
+            }
+        }
+    }
+    best
 }
 
 /// Neighbour offsets of a regular lattice of spacing 2R in lattice coordinates (c1, c2) and as

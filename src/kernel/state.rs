@@ -54,6 +54,7 @@ impl Elements {
     }
 
     /// Append one free element at `centre_m` moving with `velocity`.
+    #[allow(clippy::too_many_arguments)]
     pub fn push(&mut self, centre_m: [f64; 2], velocity: [f64; 3], radius_m: f64, mass_kg: f64, inertia_kg_m2: f64, kind: u16, body: u16) {
         self.radius.push(radius_m);
         self.mass.push(mass_kg);
@@ -122,17 +123,22 @@ pub struct State {
     pub ledger: Ledger,
     /// Completed steps.
     pub steps: u64,
-    /// Neighbour rebuilds so far.
+    /// Full neighbour rebuilds so far.
     pub rebuilds: u64,
+    /// Local neighbour updates so far (see `neighbours`).
+    pub local_updates: u64,
 }
 
 impl State {
-    /// Kinetic energy, J (velocities at the half step).
+    /// Kinetic energy of the free degrees of freedom, J (velocities at the half step). A
+    /// prescribed dof's motion is given, not part of the energy balance: what it does to the
+    /// model is the external work of its actuator.
     pub fn kinetic_energy_j(&self, el: &Elements) -> f64 {
         (0..el.len())
             .map(|e| {
-                let v = self.vel[e];
-                0.5 * el.mass[e] * (v[0] * v[0] + v[1] * v[1]) + 0.5 * el.inertia[e] * v[2] * v[2]
+                let (v, p) = (self.vel[e], el.prescribed[e]);
+                let free = |bit: u8| if p & bit == 0 { 1.0 } else { 0.0 };
+                0.5 * el.mass[e] * (free(1) * v[0] * v[0] + free(2) * v[1] * v[1]) + 0.5 * el.inertia[e] * free(4) * v[2] * v[2]
             })
             .sum()
     }

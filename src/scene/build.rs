@@ -116,15 +116,16 @@ impl Scene {
                 Error::Input { file, field, message } => Error::Input { file, field: format!("body[{k}].{field}"), message },
                 other => other,
             };
-            let lat = match body.lattice {
-                Arrangement::SimpleCubic => lattice::simple_cubic(&body.rect, body.element_radius_m),
-                Arrangement::ClosePacked => lattice::close_packed(&body.rect, body.element_radius_m),
-                Arrangement::Irregular => lattice::irregular(
-                    &body.rect,
-                    body.element_radius_m,
-                    body.seed,
-                    body.bond_gap_ratio.unwrap_or(lattice::IRREGULAR_BOND_GAP),
-                ),
+            let gap = body.bond_gap_ratio.unwrap_or(lattice::IRREGULAR_BOND_GAP);
+            let r = body.element_radius_m;
+            let lat = match (&body.rect, &body.shape) {
+                (_, Some(shape)) => shape.lattice(body.lattice, r, body.seed, gap),
+                (Some(rect), None) => match body.lattice {
+                    Arrangement::SimpleCubic => lattice::simple_cubic(rect, r),
+                    Arrangement::ClosePacked => lattice::close_packed(rect, r),
+                    Arrangement::Irregular => lattice::irregular(rect, r, body.seed, gap),
+                },
+                (None, None) => unreachable!("validated"),
             }
             .map_err(field)?;
             let overrides: Vec<(Rect, usize)> = body.region.iter().map(|r| (r.rect, index(&r.material))).collect();

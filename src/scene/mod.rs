@@ -83,7 +83,8 @@ pub struct TimeStep {
     /// Resolve the shortest binary collision with at least this many steps.
     #[serde(default)]
     pub collision_steps: Option<f64>,
-    /// Neighbour-list skin as a fraction of the smallest element radius.
+    /// Neighbour-list skin as a fraction of each element's radius (it changes the cost, never
+    /// the result).
     #[serde(default = "default_skin")]
     pub skin_ratio: f64,
     /// Refuse a `dt_s` above the stability limit (default). `false` forces it through, for
@@ -101,7 +102,7 @@ fn default_safety() -> f64 {
 }
 
 fn default_skin() -> f64 {
-    0.25
+    crate::kernel::neighbours::SKIN_RATIO
 }
 
 impl Default for TimeStep {
@@ -152,8 +153,12 @@ pub struct BodySpec {
     pub lattice: Arrangement,
     /// Element radius, m.
     pub element_radius_m: f64,
-    /// The rectangle the lattice fills.
-    pub rect: Rect,
+    /// The rectangle the lattice fills (or give a `shape`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rect: Option<Rect>,
+    /// A projectile outline the lattice fills (or give a `rect`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub shape: Option<crate::shape::Projectile>,
     /// Initial velocity [vx, vy], m/s.
     #[serde(default)]
     pub velocity_mps: [f64; 2],

@@ -65,7 +65,11 @@ impl Scene {
         for (k, b) in self.body.iter().enumerate() {
             known(format!("body[{k}].material"), &b.material)?;
             positive(&format!("body[{k}].element_radius_m"), b.element_radius_m)?;
-            b.rect.validate(&format!("body[{k}].rect"))?;
+            match (&b.rect, &b.shape) {
+                (Some(r), None) => r.validate(&format!("body[{k}].rect"))?,
+                (None, Some(s)) => s.validate(&format!("body[{k}].shape"))?,
+                _ => return Err(Error::input(format!("body[{k}]"), "give the region it fills: a rect or a shape, not both")),
+            }
             finite(&format!("body[{k}].velocity_mps"), &b.velocity_mps)?;
             if let Some(gap) = b.bond_gap_ratio
                 && !(gap.is_finite() && (0.0..=1.0).contains(&gap))

@@ -12,6 +12,20 @@ pub fn model() -> Model {
 
 /// The model at `dt_s` instead of the step the kernel chooses.
 pub fn with_step(dt_s: Option<f64>) -> Model {
+    with(dt_s, 0.0, 0.0)
+}
+
+/// The model with Rayleigh damping C = αM + βK (α 1/s, β s).
+pub fn damped(alpha_per_s: f64, beta_s: f64) -> Model {
+    with(None, alpha_per_s, beta_s)
+}
+
+/// The same at a given step.
+pub fn damped_at(alpha_per_s: f64, beta_s: f64, dt_s: f64) -> Model {
+    with(Some(dt_s), alpha_per_s, beta_s)
+}
+
+fn with(dt_s: Option<f64>, alpha_per_s: f64, beta_s: f64) -> Model {
     let r = 0.004;
     let mut b = ModelBuilder::new(Plane::Strain, 0.05);
     let mut concrete = super::plate_concrete(FailureCriterion::StrengthEnergy);
@@ -27,6 +41,8 @@ pub fn with_step(dt_s: Option<f64>) -> Model {
     if let Some(dt_s) = dt_s {
         b.step = StepChoice::Fixed { dt_s };
     }
+    b.alpha_per_s = alpha_per_s;
+    b.beta_s = beta_s;
     let mut m = b.build().unwrap();
     m.parallel_min_contacts = 0;
     m

@@ -4,12 +4,15 @@
 //!
 //! **Their springs** do not come from a bond's Kt (which is zero for a hexagonal lattice with
 //! ν* ≥ 1/3, e.g. steel in plane strain, and would leave such a body frictionless). Each
-//! element contributes a half-spring of its material: normal 2·Kn with Kn its bond's normal
-//! stiffness (eq 1.1 or 3.1; between two elements of one material the contact is exactly as
-//! stiff in compression as the bond it may replace, so a closed crack carries compression as
-//! the intact lattice does), tangential Mindlin's fraction 2(1−ν)/(2−ν) of it, ν the material's
-//! Poisson ratio (Mindlin 1949: the tangential to normal compliance ratio of elastic bodies in
-//! contact; 0.89 for concrete, 0.82 for steel). The halves act in series.
+//! element contributes a normal half-spring 2·Kn of its material, Kn its bond's normal stiffness
+//! (eq 1.1 or 3.1, from E*; between two elements of one material the contact is exactly as
+//! stiff in compression as the bond it may replace, so a closed crack carries compression as the
+//! intact lattice does); the halves act in series. The tangential spring is Kn/3: for uniform
+//! disks (I = m r²/2, lever arm r) a sticking contact's tangential oscillation then has the
+//! frequency of its normal one, ω_t² = Kt (1/m_i + 1/m_j + r_i²/I_i + r_j²/I_j) = 3 Kt (1/m_i +
+//! 1/m_j) = ω_n², whatever the two elements (Schäfer, Dippel & Wolf 1996 give the same rule,
+//! 2/7, for spheres). Friction thus adds no faster mode to a collision, and a packing of
+//! fragments in stick is no stiffer, for the time step, than a lattice with Kt/Kn = 1/3.
 //!
 //! **Touching** is d < d0*, the contact's rest length: r_i + r_j for a new pair; a broken bond's
 //! rest length (its initial distance, moved in by compaction) while it still touches. A pair
@@ -35,10 +38,9 @@ pub struct Params {
     pub cohesion_n: f64,
 }
 
-/// Mindlin's tangential to normal stiffness ratio of an elastic body with Poisson ratio ν.
-pub fn mindlin_ratio(poisson: f64) -> f64 {
-    2.0 * (1.0 - poisson) / (2.0 - poisson)
-}
+/// Tangential to normal stiffness of a frictional contact (equal normal and tangential
+/// frequencies for disks, see the module documentation).
+pub const TANGENTIAL_RATIO: f64 = 1.0 / 3.0;
 
 /// Two half-springs in series, each twice its element's `x`, `y`: equal halves give x.
 pub fn series(x: f64, y: f64) -> f64 {
@@ -49,11 +51,9 @@ impl Params {
     /// Between elements of materials `a` and `b` whose bonds have normal stiffness `kn_a`,
     /// `kn_b` (N/m); μ is the mean of the two, the cohesion the smaller, per `thickness_m`.
     pub fn between(a: &Material, kn_a: f64, b: &Material, kn_b: f64, thickness_m: f64) -> Params {
+        let kn = series(kn_a, kn_b);
         Params {
-            springs: Springs {
-                kn_n_per_m: series(kn_a, kn_b),
-                kt_n_per_m: series(kn_a * mindlin_ratio(a.poisson_ratio), kn_b * mindlin_ratio(b.poisson_ratio)),
-            },
+            springs: Springs { kn_n_per_m: kn, kt_n_per_m: TANGENTIAL_RATIO * kn },
             mu: 0.5 * (a.friction_coefficient + b.friction_coefficient),
             cohesion_n: a.cohesion_n_per_m.min(b.cohesion_n_per_m) * thickness_m,
         }

@@ -37,27 +37,29 @@ pub struct Springs {
 }
 
 /// Parameters of one kind of contact (a pair of element kinds): configuration, fixed when the
-/// model is built.
+/// model is built. The fields every contact reads come first, in declaration order (`repr(C)`),
+/// so that they share the first cache lines; the rate part's tables come last.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[repr(C)]
 pub struct ContactClass {
     /// Springs of a bond (eq 1.1, 3.1–3.2; two materials: half-springs in series).
     pub bond: Springs,
     /// Bond strength (plateaus and breaking opening; two materials: the weaker).
     pub strength: Strength,
-    /// Frictional contacts: springs and Coulomb constants.
-    pub contact: friction::Params,
-    /// r_i + r_j, m: a new pair's rest length.
-    pub radius_sum_m: f64,
     /// Share of the centre distance from i's centre to the contact point: r_i/(r_i + r_j).
     pub lever_i: f64,
     /// Share for j: r_j/(r_i + r_j).
     pub lever_j: f64,
+    /// r_i + r_j, m: a new pair's rest length.
+    pub radius_sum_m: f64,
+    /// Frictional contacts: springs and Coulomb constants.
+    pub contact: friction::Params,
     /// Dashpots (stiffness-proportional Rayleigh damping).
     pub damping: damping::Params,
-    /// Strain-rate effects.
-    pub rate: rate::Params,
     /// Compaction.
     pub compaction: compaction::Params,
+    /// Strain-rate effects.
+    pub rate: rate::Params,
 }
 
 /// One element kind's side of a contact class.
@@ -327,7 +329,7 @@ pub fn interact<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g:
 /// A bond: normal spring with a tensile plateau (and compaction), shear spring with its
 /// plateau, the failure rule, dashpots; springs and strengths scaled by the rate part.
 #[inline(always)]
-fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
+pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
     let opening = g.d_m - c.rest_m;
     let slip = g.vt_mps * dt_s;
     let (mut kn, mut kt) = (k.bond.kn_n_per_m, k.bond.kt_n_per_m);

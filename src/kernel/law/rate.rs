@@ -37,10 +37,11 @@
 //! r_old/r_new through a per-bond shift of the spring's zero. The stored energy then changes by
 //! F²/2 (1/K_new − 1/K_old); the ledger books it as rate work (positive when the bond stiffens).
 //!
-//! **Speed.** The four ratios are tabulated per contact class on a grid of 8 points per octave
-//! of ε̇ and read by linear interpolation in a piecewise-linear log₂ (exponent and mantissa of
-//! the float): no transcendental function in the step loop; within 2e-4 of the exact laws (a
-//! test checks it), and still continuous and non-decreasing.
+//! **Speed.** The four ratios are tabulated per contact class on a grid of 16 points per octave
+//! of ε̇, plus the laws' kinks and jumps, and read by linear interpolation in a piecewise-linear
+//! log₂ (exponent and mantissa of the float): no transcendental function in the step loop;
+//! within 2e-4 of the exact laws (a test checks it), continuous and non-decreasing where they
+//! are, and with the seed's jump where it has one.
 
 use serde::{Deserialize, Serialize};
 
@@ -53,7 +54,7 @@ const CEB_FCO_PA: f64 = 10e6;
 /// Lowest rate the table resolves, 1/s (below it every ratio is 1).
 const TABLE_LOW_PER_S: f64 = 1e-7;
 /// Table points per octave of rate.
-const PER_OCTAVE: f64 = 8.0;
+const PER_OCTAVE: f64 = 16.0;
 
 /// Which compressive-strength law.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
@@ -190,40 +191,97 @@ fn pseudo_exp2(u: f64) -> f64 {
     2f64.powi(e as i32) * (1.0 + (u - e))
 }
 
-/// The ratios tabulated against [`pseudo_log2`] of the rate.
+/// A point inside a table interval where a law has a kink or a jump, with the values just
+/// below and just above it.
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+struct Split {
+    u: f64,
+    below: Ratios,
+    above: Ratios,
+}
+
+/// The ratios tabulated against [`pseudo_log2`] of the rate: nodes at 16 per octave, plus the
+/// points where a law has a kink or a jump (the quasi-static rate, Klepaczko's crossing of the
+/// static strength, the compressive law's switch), so that linear interpolation keeps them.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Table {
     u0: f64,
     values: Vec<Ratios>,
+    /// Per interval, the index of its split in `splits` (u32::MAX: none).
+    split_of: Vec<u32>,
+    splits: Vec<Split>,
 }
 
 impl Table {
-    /// Tabulate `f` from [`TABLE_LOW_PER_S`] to at least `high_per_s`.
-    pub fn new(high_per_s: f64, f: impl Fn(f64) -> Ratios) -> Table {
+    /// Tabulate `f` from [`TABLE_LOW_PER_S`] to at least `high_per_s`, with the kinks or jumps
+    /// at the rates `kinks_per_s` (at most one per interval of 1/16 octave; `f` is the value at
+    /// the kink and the limit from above is taken just past it).
+    pub fn new(high_per_s: f64, kinks_per_s: &[f64], f: impl Fn(f64) -> Ratios) -> Table {
         let u0 = pseudo_log2(TABLE_LOW_PER_S).floor();
         let u1 = pseudo_log2(high_per_s.max(2.0 * TABLE_LOW_PER_S)).ceil() + 1.0;
         let n = ((u1 - u0) * PER_OCTAVE) as usize + 1;
         let values = (0..n).map(|k| f(pseudo_exp2(u0 + k as f64 / PER_OCTAVE))).collect();
-        Table { u0, values }
+        let mut split_of = vec![u32::MAX; n - 1];
+        let mut splits = Vec::new();
+        for &x in kinks_per_s {
+            if !(x > TABLE_LOW_PER_S && x.is_finite()) {
+                continue;
+            }
+            let u = pseudo_log2(x);
+            let k = ((u - u0) * PER_OCTAVE) as usize;
+            if k + 1 >= n {
+                continue;
+            }
+            assert!(split_of[k] == u32::MAX, "two kinks in one table interval at {x} s⁻¹");
+            split_of[k] = splits.len() as u32;
+            splits.push(Split { u, below: f(x), above: f(x * (1.0 + 1e-12)) });
+        }
+        Table { u0, values, split_of, splits }
     }
 
     /// The ratios at `rate_per_s` (≥ 0), by linear interpolation; STATIC below the table, the
     /// last row above it.
     #[inline(always)]
     pub fn at(&self, rate_per_s: f64) -> Ratios {
-        if !(rate_per_s > TABLE_LOW_PER_S) {
+        // Also catches a NaN rate.
+        if rate_per_s.partial_cmp(&TABLE_LOW_PER_S) != Some(std::cmp::Ordering::Greater) {
             return STATIC;
         }
-        let s = (pseudo_log2(rate_per_s) - self.u0) * PER_OCTAVE;
+        let u = pseudo_log2(rate_per_s);
+        let s = (u - self.u0) * PER_OCTAVE;
         let last = self.values.len() - 1;
         if s >= last as f64 {
             return self.values[last];
         }
         let k = s as usize;
-        let w = s - k as f64;
-        let (a, b) = (&self.values[k], &self.values[k + 1]);
+        let (mut a, mut b, mut w) = (&self.values[k], &self.values[k + 1], s - k as f64);
+        let split = self.split_of[k];
+        if split != u32::MAX {
+            let p = &self.splits[split as usize];
+            let (uk, uk1) = (self.u0 + k as f64 / PER_OCTAVE, self.u0 + (k + 1) as f64 / PER_OCTAVE);
+            if u <= p.u {
+                if p.u == uk {
+                    return p.below;
+                }
+                (b, w) = (&p.below, (u - uk) / (p.u - uk));
+            } else {
+                (a, w) = (&p.above, (u - p.u) / (uk1 - p.u));
+            }
+        }
         [a[0] + w * (b[0] - a[0]), a[1] + w * (b[1] - a[1]), a[2] + w * (b[2] - a[2]), a[3] + w * (b[3] - a[3])]
     }
+}
+
+/// Where a material's laws have kinks or jumps, 1/s.
+pub fn kinks_per_s(youngs_modulus_pa: f64, tensile_pa: f64, spec: &RateSpec) -> [f64; 3] {
+    [
+        REFERENCE_RATE_PER_S,
+        tensile_pa / ((spec.alpha + 1.0) * spec.critical_time_s * youngs_modulus_pa),
+        match spec.compressive {
+            CompressiveRate::Ceb => 30.0,
+            CompressiveRate::SeedPrinted => 10.0,
+        },
+    ]
 }
 
 /// The exact ratios of a material at `rate_per_s`.
@@ -272,7 +330,13 @@ impl Params {
             (None, None) => (max_speed_mps / radius_sum_m).max(1.0),
         };
         let f = |m: &crate::material::Material, s: &RateSpec, rate: f64| exact(rate, m.youngs_modulus_pa, m.tensile_strength_pa, m.compressive_strength_pa, s);
-        let table = Table::new(cap, |rate| {
+        let mut kinks = kinks_per_s(a.youngs_modulus_pa, a.tensile_strength_pa, &ra).to_vec();
+        for k in kinks_per_s(b.youngs_modulus_pa, b.tensile_strength_pa, &rb) {
+            if !kinks.iter().any(|&x| (x / k - 1.0).abs() < 1e-9) {
+                kinks.push(k);
+            }
+        }
+        let table = Table::new(cap, &kinks, |rate| {
             let (x, y) = (f(a, &ra, rate), f(b, &rb, rate));
             [x[0].min(y[0]), x[1].min(y[1]), x[2].min(y[2]), x[3].min(y[3])]
         });
