@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cargo build --release --quiet
-bin=target/release/demsweep
+bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
 $bin validate cracked-plate --levels 0,1,2
 $bin validate cantilever --levels 0,1,2
 # Continuum references for the cracked plate (LEFM and a cohesive crack, plane-stress FE): a

@@ -6,10 +6,13 @@
 //! ([`units`]) and every public quantity names its unit.
 
 pub mod analysis;
+pub mod ballistic;
 pub mod bench;
+pub mod calibrate;
 pub mod cases;
 pub mod units;
 pub mod cli;
+pub mod converge;
 pub mod error;
 pub mod empirical;
 
@@ -17,7 +20,11 @@ pub use error::{Error, Result};
 pub mod kernel;
 pub mod lattice;
 pub mod material;
+pub mod outcome;
+pub mod penetration;
+pub mod picture;
 pub mod run;
 pub mod scene;
 pub mod shape;
+pub mod sweep;
 pub mod table;

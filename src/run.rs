@@ -38,6 +38,8 @@ pub struct RunSummary {
     pub dt_bound_s: f64,
     /// The frequency bound, rad/s.
     pub omega_bound_rad_per_s: f64,
+    /// What sets the step: the safety factor and which contacts give the frequency bound.
+    pub dt_limit: String,
     /// Simulated time, s.
     pub simulated_s: f64,
     /// Why the run ended: `duration` (the scene's duration, no stop rule), the stop rule's
@@ -190,6 +192,9 @@ pub struct Checkpointing<'a> {
     pub save: &'a mut dyn FnMut(&RunCheckpoint) -> Result<()>,
 }
 
+/// Called with the model at each record; an error stops the run.
+pub type Observer<'a> = &'a mut dyn FnMut(&Model) -> Result<()>;
+
 /// How to run.
 #[derive(Default)]
 pub struct Options<'a> {
@@ -203,6 +208,8 @@ pub struct Options<'a> {
     pub stop: Option<&'a mut dyn StopRule>,
     /// Called with the fraction of the duration done, at each record (progress display).
     pub tick: Option<&'a mut dyn FnMut(f64)>,
+    /// Called with the model at each record (pictures); an error stops the run.
+    pub observe: Option<Observer<'a>>,
 }
 
 /// Run to the scene's duration, recording probes every `every_steps` and at the end.
@@ -259,6 +266,9 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
             if let Some(t) = opts.tick.as_deref_mut() {
                 t(s as f64 / cap as f64);
             }
+            if let Some(f) = opts.observe.as_deref_mut() {
+                f(m)?;
+            }
         }
         if let Some(reason) = settled {
             end_reason = reason;
@@ -301,6 +311,7 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         dt_s: info.dt_s,
         dt_bound_s: info.dt_bound_s,
         omega_bound_rad_per_s: info.omega_bound_rad_per_s,
+        dt_limit: info.detail.clone(),
         simulated_s: m.time_s(),
         end_reason,
         kinetic_energy_j: ke,

@@ -136,7 +136,8 @@ fn pull(class: &ContactClass, h: f64) -> (Vec<(f64, f64)>, Dissipation) {
     let mut rec = vec![(0.0, 0.0)];
     for k in 1..100_000_000u64 {
         let opening = k as f64 * h;
-        let g = Kinematics { d_m: d0 + opening, nx: 1.0, ny: 0.0, vn_mps: 0.0, vt_mps: 0.0, li_m: 0.5 * (d0 + opening), lj_m: 0.5 * (d0 + opening) };
+        // The relative speed is the path's: the plastic work weighs the force of both ends of a step.
+        let g = Kinematics { d_m: d0 + opening, nx: 1.0, ny: 0.0, vn_mps: h / 1e-9, vt_mps: 0.0, li_m: 0.5 * (d0 + opening), lj_m: 0.5 * (d0 + opening) };
         let f = law::interact::<Plain>(&mut c, &mut Extra::new(d0), class, &g, 1e-9, &mut diss);
         rec.push((opening, f.fx));
         if c.bond == Bond::Frictional {

@@ -194,13 +194,19 @@ fn bound_covers_a_projectile_pressed_into_a_block_with_every_contact_at_its_stif
     let (c, s) = (b.add_material(concrete), b.add_material(steel));
     let block = lattice::close_packed(&Rect { x_min_m: 0.0, x_max_m: 16.0 * 2.0 * rc, y_min_m: 0.0, y_max_m: 10.0 * 3f64.sqrt() * rc }, rc).unwrap();
     let top = block.centres.iter().map(|p| p[1]).fold(0.0, f64::max);
-    let y0 = top + 0.85 * (rc + rs) - rs;
+    // Built just touching (bodies may not start inside each other), then pressed in by 15 % of
+    // r_c + r_s.
+    let y0 = top + (rc + rs) - rs + 1e-9;
     let proj = lattice::close_packed(&Rect { x_min_m: 0.15, x_max_m: 0.15 + 10.0 * rs, y_min_m: y0, y_max_m: y0 + 12.0 * rs }, rs).unwrap();
     b.add_body("block", &block, Arrangement::ClosePacked, c, &[], [0.0; 3]);
     b.add_body("projectile", &proj, Arrangement::ClosePacked, s, &[], [0.0; 3]);
     let mut model = b.build().unwrap();
     assert!(model.parts.rate && model.parts.compaction);
     let bound = model.step_info.omega_bound_rad_per_s;
+    for e in block.centres.len()..model.el.len() {
+        model.state.pos[e][1] -= 0.15 * (rc + rs);
+    }
+    model.rebuild_neighbours();
     // Every bond at the rate cap's modulus (the larger of the tension and compression ratios).
     let n_block = block.centres.len();
     let st = &mut model.state;
@@ -209,6 +215,7 @@ fn bound_covers_a_projectile_pressed_into_a_block_with_every_contact_at_its_stif
         if class.rate.enabled {
             x.modulus_ratio = class.rate.max_modulus_ratio();
             x.rate_per_s = class.rate.cap_per_s;
+            x.rate_mean_per_s = class.rate.cap_per_s;
         }
     }
     // A patch of broken bonds in the middle of the block, squeezed by 0.3 % so they touch.

@@ -181,12 +181,14 @@ fn concrete_class(rate_on: bool, dt_s: f64) -> ContactClass {
 }
 
 /// Pull a bond apart at `speed_mps` with step `dt_s` until it breaks: (peak force N, slope of
-/// the elastic branch N/m (the modulus acts on increments, from the step after the rate is
-/// first seen), dissipation, force–opening record).
+/// the elastic branch N/m, dissipation, force–opening record).
 fn pull(k: &ContactClass, speed_mps: f64, dt_s: f64) -> (f64, f64, Dissipation, Vec<(f64, f64)>) {
     let d0 = 0.0127;
     let mut c = Contact::bonded(0, 1, 0, d0);
     let mut x = Extra::new(d0);
+    // A bond loaded at this rate for long: its moduli are the rate's (the filter is tested on
+    // its own).
+    x.rate_mean_per_s = speed_mps / d0;
     let mut diss = Dissipation::default();
     let mut rec = vec![(0.0, 0.0)];
     for n in 1..10_000_000u64 {
@@ -226,22 +228,86 @@ fn a_bond_pulled_fast_is_stronger_stiffer_and_tougher_by_the_laws() {
 }
 
 #[test]
+fn the_mean_rate_that_sets_the_moduli_follows_a_first_order_lag() {
+    // A bond stretched at a constant 100 s⁻¹ from rest: its mean rate is 100 (1 − e^(−t/τ)),
+    // τ = t_c0; the held rate is 100 at once.
+    let dt = 1e-7;
+    let k = concrete_class(true, dt);
+    let (mut held, mut mean) = (0.0, 0.0);
+    for n in 1..=500u32 {
+        let r = k.rate.update(&mut held, &mut mean, 1.27, 1.0 / 0.0127);
+        let t = n as f64 * dt;
+        let expect = 100.0 * (1.0 - (-t / 50e-6).exp());
+        assert!((mean / expect - 1.0).abs() < 1e-9, "step {n}: mean {mean}, expected {expect}");
+        assert!((held - 100.0).abs() < 1e-9);
+        assert!((r[1] - rate::modulus_ratio_tension(mean)).abs() < 2e-4 * r[1], "the tensile modulus is the mean rate's");
+        assert!((r[2] - rate::tensile_ratio(100.0, e_pa(), sigma_pa(), &RateSpec::default())).abs() < 2e-4 * r[2], "the strength is the held rate's");
+    }
+}
+
+#[test]
 fn the_held_rate_keeps_a_bond_strong_when_it_stops_stretching() {
     // A bond loaded fast, then held: v·n = 0, yet within the memory (50 µs) its strength is
     // still the dynamic one, and it decays to the static one afterwards.
     let dt = 1e-7;
     let k = concrete_class(true, dt);
-    let mut held = 0.0;
-    let fast = k.rate.update(&mut held, 1.27, 1.0 / 0.0127)[2];
+    let (mut held, mut mean) = (0.0, 0.0);
+    let fast = k.rate.update(&mut held, &mut mean, 1.27, 1.0 / 0.0127)[2];
     let mut after = fast;
     for _ in 0..100 {
-        after = k.rate.update(&mut held, 0.0, 1.0 / 0.0127)[2];
+        after = k.rate.update(&mut held, &mut mean, 0.0, 1.0 / 0.0127)[2];
     }
     // 100 steps of 0.1 µs = 10 µs: e^(−0.2) of the rate, about e^(−0.2/1.95) of the strength.
     let expect = rate::tensile_ratio(100.0 * (-0.2f64).exp(), e_pa(), sigma_pa(), &RateSpec::default());
     assert!(fast > 10.0 && (after / expect - 1.0).abs() < 1e-3, "ξ {fast} then {after} (expected {expect})");
     for _ in 0..100_000 {
-        k.rate.update(&mut held, 0.0, 1.0 / 0.0127);
+        k.rate.update(&mut held, &mut mean, 0.0, 1.0 / 0.0127);
     }
-    assert_eq!(k.rate.update(&mut held, 0.0, 1.0 / 0.0127)[2], 1.0);
+    assert_eq!(k.rate.update(&mut held, &mut mean, 0.0, 1.0 / 0.0127)[2], 1.0);
+}
+
+#[test]
+fn regression_a_bond_vibrating_through_zero_force_keeps_its_zero() {
+    // A rate-enhanced bond driven to and fro through its rest length, by half the static
+    // opening at the tensile plateau (elastic throughout), at a rate where the compressive and
+    // tensile moduli differ. It used to
+    // move its zero inward at every crossing (the force-keeping shift of a rate change applied
+    // to the tension ↔ compression switch), until a vibrating pair crept shut and a fragment
+    // was fired off at 1 km/s. After 2000 cycles the zero must be where it was, and the work
+    // done on the bond must equal what the ledger and the spring hold.
+    let dt = 1e-7;
+    let k = concrete_class(true, dt);
+    let d0 = 0.0127;
+    let amp = 0.5 * k.strength.normal_force_n / k.bond.kn_n_per_m;
+    let period_steps = 200u64;
+    let w = 2.0 * std::f64::consts::PI / (period_steps as f64 * dt);
+    let mut c = Contact::bonded(0, 1, 0, d0);
+    let mut x = Extra::new(d0);
+    let mut diss = Dissipation::default();
+    let (mut work, mut f_last, mut d_last) = (0.0, 0.0, d0);
+    let mut saw = (false, false);
+    // The work is integrated by the trapezoid rule, as central differences take it out of the
+    // kinetic energy; it must equal what the ledger books and the spring holds.
+    for n in 1..=2000 * period_steps {
+        let t = n as f64 * dt;
+        let d = d0 + amp * (w * t).sin();
+        // The relative speed of the step, (d_n − d_{n−1})/Δt, as central differences have it.
+        let g = Kinematics { d_m: d, nx: 1.0, ny: 0.0, vn_mps: (d - d_last) / dt, vt_mps: 0.0, li_m: 0.5 * d0, lj_m: 0.5 * d0 };
+        let f = law::interact::<Rated>(&mut c, &mut x, &k, &g, dt, &mut diss).fx;
+        // Work done on the bond by pulling j away: tension force (f on i toward j) × opening.
+        work += 0.5 * (f + f_last) * (d - d_last);
+        (f_last, d_last) = (f, d);
+        saw = (saw.0 || x.modulus_ratio > 1.01 && d < d0, saw.1 || x.modulus_ratio > 1.01 && d > d0);
+    }
+    assert!(c.bond == Bond::Intact && c.dp_m == 0.0 && saw.0 && saw.1, "elastic, both branches rate-enhanced");
+    // The force at the rest length, on a copy of the bond: zero if the zero has not moved.
+    let at_rest = Kinematics { d_m: d0, nx: 1.0, ny: 0.0, vn_mps: 0.0, vt_mps: 0.0, li_m: 0.5 * d0, lj_m: 0.5 * d0 };
+    let (mut c2, mut x2) = (c, x);
+    let f0 = law::interact::<Rated>(&mut c2, &mut x2, &k, &at_rest, dt, &mut Dissipation::default()).fx;
+    let moved = f0 / (x2.modulus_ratio * k.bond.kn_n_per_m);
+    assert!(moved.abs() < 1e-3 * amp, "the zero moved by {moved:.3e} m ({:.2} % of the amplitude)", 100.0 * moved / amp);
+    let stored = law::stored_energy_j::<Rated>(&c, &x, &k, &Kinematics { d_m: d_last, nx: 1.0, ny: 0.0, vn_mps: 0.0, vt_mps: 0.0, li_m: 0.5 * d0, lj_m: 0.5 * d0 }, dt);
+    let booked = diss.total_j() + stored;
+    let scale = 0.5 * k.bond.kn_n_per_m * amp * amp;
+    assert!((booked - work).abs() <= 1e-6 * work.abs(), "work {work:.6e} J, booked + stored {booked:.6e} J (spring energy at the amplitude {scale:.3e} J)");
 }

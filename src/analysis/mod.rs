@@ -11,7 +11,7 @@ pub mod sent;
 pub mod timoshenko;
 
 pub use beam::{Beam, Theory, cowper_rectangle};
-pub use richardson::{Convergence, NotConvergent, richardson};
+pub use richardson::{Convergence, NotConvergent, celik, richardson};
 pub use sdof::{sdof_natural_rad_per_s, sdof_tip_amplitude_m};
 pub use sent::sent_critical_stress_pa;
 pub use timoshenko::{CantileverModes, Mode, fundamental_rad_per_s, tip_amplitude_m};

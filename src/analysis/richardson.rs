@@ -110,9 +110,68 @@ pub fn richardson(phi: [f64; 3], alpha: f64) -> Result<Convergence, NotConvergen
     })
 }
 
+/// [`richardson`] for three meshes whose refinement ratios differ (Celik et al. 2008, "Procedure
+/// for estimation and reporting of uncertainty due to discretization in CFD applications", J.
+/// Fluids Eng. 130, 078001, eqs 3–6): `h` are the element sizes, coarse to fine. The order solves
+/// p = |ln|ε32/ε21| + q(p)| / ln r21 with q(p) = ln((r21^p − s)/(r32^p − s)), s = sign(ε32/ε21),
+/// by fixed-point iteration (ε, r and the mesh numbering as in the paper: 1 is the finest). The
+/// same refusals as [`richardson`]: Celik's absolute values would give an order to oscillating
+/// or diverging solutions too, which is a number where there is none.
+pub fn celik(phi: [f64; 3], h: [f64; 3]) -> Result<Convergence, NotConvergent> {
+    let [phi3, phi2, phi1] = phi; // coarse, medium, fine in the paper's numbering
+    let [h3, h2, h1] = h;
+    let (r21, r32) = (h2 / h1, h3 / h2);
+    if !(r21 > 1.0 && r32 > 1.0 && r21.is_finite() && r32.is_finite()) || phi.iter().any(|v| !v.is_finite()) {
+        return Err(NotConvergent::InvalidInput { alpha: r21.min(r32), phi });
+    }
+    let (e32, e21) = (phi3 - phi2, phi2 - phi1);
+    if e32 == 0.0 || e21 == 0.0 {
+        return Err(NotConvergent::Indeterminate { phi });
+    }
+    let ratio = e21 / e32;
+    if ratio < 0.0 {
+        return Err(NotConvergent::Oscillatory { ratio });
+    }
+    if ratio >= 1.0 {
+        return Err(NotConvergent::Divergent { ratio });
+    }
+    let s = 1.0f64; // monotone from here on
+    let mut p = (e32 / e21).abs().ln() / r21.ln();
+    for _ in 0..200 {
+        let q = ((r21.powf(p) - s) / (r32.powf(p) - s)).ln();
+        let next = ((e32 / e21).abs().ln() + q).abs() / r21.ln();
+        if (next - p).abs() <= 1e-14 * p.abs().max(1.0) {
+            p = next;
+            break;
+        }
+        p = next;
+    }
+    if !(p.is_finite() && p > 0.0) {
+        return Err(NotConvergent::Divergent { ratio });
+    }
+    let gain = r21.powf(p) - 1.0;
+    Ok(Convergence { order: p, extrapolate: (r21.powf(p) * phi1 - phi2) / gain, gci_fine: GCI_SAFETY_FACTOR * ((phi1 - phi2) / phi1).abs() / gain, ratio })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn celik_recovers_order_and_limit_with_unequal_ratios() {
+        for &p in &[0.8, 1.0, 2.0, 3.0] {
+            let h = [1.0, 0.6, 0.25];
+            let phi = h.map(|h: f64| 3.0 + 0.4 * h.powf(p));
+            let c = celik(phi, h).unwrap();
+            assert!((c.order - p).abs() < 1e-9, "p {p}: {c:?}");
+            assert!((c.extrapolate - 3.0).abs() < 1e-9, "p {p}: {c:?}");
+        }
+        // Equal ratios: the same answer as eq 4.1.
+        let phi = [2.1, 2.025, 2.00625];
+        let (a, b) = (celik(phi, [1.0, 0.5, 0.25]).unwrap(), richardson(phi, 2.0).unwrap());
+        assert!((a.order - b.order).abs() < 1e-12 && (a.extrapolate - b.extrapolate).abs() < 1e-12 && (a.gci_fine - b.gci_fine).abs() < 1e-12);
+        assert!(matches!(celik([1.0, 1.2, 1.1], [1.0, 0.5, 0.2]), Err(NotConvergent::Oscillatory { .. })));
+    }
 
     /// φ(h) = φ0 + C h^p on h = h0, h0/α, h0/α².
     fn synthetic(phi0: f64, c: f64, p: f64, h0: f64, alpha: f64) -> [f64; 3] {

@@ -7,5 +7,6 @@
 pub mod cantilever;
 pub mod cracked_plate;
 pub mod fit;
+pub mod penetration;
 pub mod seed;
 pub mod study;

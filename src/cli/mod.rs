@@ -2,11 +2,15 @@
 
 use clap::{Parser, Subcommand};
 
+pub mod ballistic;
 pub mod bench;
+pub mod calibrate;
+pub mod converge;
 pub mod empirical;
 pub mod range;
 pub mod run;
 pub mod scene;
+pub mod sweep;
 pub mod validate;
 
 /// demsweep: deterministic 2D DEM of concrete impact, with the empirical formulas beside it.
@@ -28,6 +32,18 @@ pub enum Command {
     Scene(scene::Args),
     /// Measure the kernel's speed (ns per contact-step, element-steps per second).
     Bench(bench::Args),
+    /// Calibrate a penetration scene's strength factor to a depth at a velocity (the source's
+    /// calibration) and write the calibrated scene.
+    Calibrate(calibrate::Args),
+    /// Run a scene over a grid of field values or a parameter table, in parallel.
+    Sweep(sweep::Args),
+    /// Scabbing and perforation thresholds of a penetration scene: a velocity sweep, then
+    /// bisection of both thresholds, with the empirical formulas beside them.
+    Ballistic(ballistic::Args),
+    /// Refine a case and report observed orders, the Richardson extrapolate, GCI and cost.
+    Converge(converge::Args),
+    /// Join the shards of a ballistic sweep (`ballistic --shard i/n`) into one set of tables.
+    Merge(ballistic::MergeArgs),
     /// Empirical concrete-impact formulas: penetration, scabbing and perforation thickness.
     Empirical(empirical::Args),
 }
@@ -40,5 +56,10 @@ pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
         Command::Scene(args) => scene::run(args),
         Command::Validate(args) => validate::run(args),
         Command::Empirical(args) => empirical::run(args),
+        Command::Calibrate(args) => calibrate::run(args),
+        Command::Sweep(args) => sweep::run(args),
+        Command::Ballistic(args) => ballistic::run(args),
+        Command::Merge(args) => ballistic::merge(args),
+        Command::Converge(args) => converge::run(args),
     }
 }

@@ -1,36 +1,107 @@
-//! `demsweep run <scene.toml>`: run one scene, write its summary and series.
+//! `demsweep run <scene.toml> [--set FIELD=VALUE]…`: run one scene, write its summary (and, for
+//! a kernel scene, its probe series).
 
 use std::path::PathBuf;
 
 use crate::error::{Error, Result};
 use crate::run::{Checkpointing, RunCheckpoint};
-use crate::scene::Scene;
+use crate::scene::{SceneFile, overrides::Override};
+use crate::table::Table;
 
 /// Arguments of `demsweep run`.
 #[derive(Debug, clap::Args)]
 pub struct Args {
-    /// Scene file (TOML).
+    /// Scene file (TOML): a kernel scene, or a penetration scene (`[penetration]`).
     pub scene: PathBuf,
-    /// Output folder; the run writes `<out>/<scene name>/summary.csv` and `series.csv`.
+    /// Change one field of the scene, checked like the file itself (dotted path; repeatable),
+    /// e.g. `--set projectile.v0_fps=850`.
+    #[arg(long = "set", value_name = "FIELD=VALUE")]
+    pub set: Vec<String>,
+    /// Output folder; the run writes `<out>/<scene name>/summary.csv` (and `series.csv`).
     #[arg(long, default_value = "results/runs")]
     pub out: PathBuf,
     /// No progress bar.
     #[arg(long)]
     pub quiet: bool,
     /// Write `<out>/<scene name>/checkpoint.bin` every N steps (atomically; removed when the
-    /// run completes). 0: never.
+    /// run completes). 0: never. Kernel scenes only.
     #[arg(long, default_value_t = 0, value_name = "N")]
     pub checkpoint_every_steps: u64,
     /// Continue from `<out>/<scene name>/checkpoint.bin` if it exists (a run that was killed);
     /// the tables are then those of a run that never stopped.
     #[arg(long)]
     pub resume: bool,
+    /// Write pictures of the run into this folder: PNG frames and a VTK series (penetration
+    /// scenes).
+    #[arg(long, value_name = "DIR")]
+    pub snapshots: Option<PathBuf>,
+    /// Simulated time between pictures, ms.
+    #[arg(long, default_value_t = 0.25, value_name = "MS")]
+    pub snapshot_every_ms: f64,
+}
+
+fn announce(name: &str, m: &crate::kernel::Model, steps: f64) {
+    let info = &m.step_info;
+    eprintln!("{name}: {} elements, {} contacts, Δt = {:.4e} s ({}), at most {steps} steps", m.el.len(), m.state.contacts.len(), info.dt_s, info.detail);
+}
+
+fn print(summary: &Table, dir: &std::path::Path) {
+    for (h, v) in summary.header.iter().zip(&summary.rows[0]) {
+        println!("{h:>28} = {v}");
+    }
+    println!("{:>28} = {}", "written", dir.display());
 }
 
 /// Run the scene. No table is written unless the run completes; tables and checkpoints are
 /// written atomically.
 pub fn run(args: Args) -> Result<()> {
-    let scene = Scene::from_file(&args.scene)?;
+    let overrides: Vec<Override> = args.set.iter().map(|s| Override::parse(s)).collect::<Result<_>>()?;
+    match crate::scene::load(&args.scene, &overrides)? {
+        SceneFile::Kernel(scene) => run_kernel(&args, scene),
+        SceneFile::Penetration(scene) => run_penetration(&args, scene),
+    }
+}
+
+fn run_penetration(args: &Args, scene: crate::cases::penetration::PenetrationScene) -> Result<()> {
+    if args.checkpoint_every_steps > 0 || args.resume {
+        return Err(Error::input("--checkpoint-every-steps", "checkpoints are for kernel scenes; a penetration run takes seconds"));
+    }
+    let dir = args.out.join(&scene.penetration.name);
+    let bar = if args.quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(1000) };
+    let mut tick = |f: f64| bar.set_position((f * 1000.0) as u64);
+    let mut pictures = match &args.snapshots {
+        Some(d) => Some(crate::picture::Series::new(d, &scene)?),
+        None => None,
+    };
+    if !(args.snapshot_every_ms.is_finite() && args.snapshot_every_ms > 0.0) {
+        return Err(Error::input("--snapshot-every-ms", format!("must be a number > 0, got {}", args.snapshot_every_ms)));
+    }
+    let every_s = if pictures.is_some() { args.snapshot_every_ms * 1e-3 } else { 0.0 };
+    let mut started = false;
+    let mut frame = |m: &crate::kernel::Model| {
+        if !std::mem::replace(&mut started, true) {
+            announce(&scene.penetration.name, m, (scene.penetration.max_time_s / m.dt_s()).ceil());
+        }
+        match pictures.as_mut() {
+            Some(p) => p.frame(m),
+            None => Ok(()),
+        }
+    };
+    let hooks = crate::penetration::Hooks { each_record: Some(&mut frame), record_every_s: every_s, tick: Some(&mut tick), ..Default::default() };
+    let finished = crate::penetration::run(&scene, hooks);
+    bar.finish_and_clear();
+    let finished = finished?;
+    if let Some(p) = pictures.as_mut() {
+        let last = p.finish(&finished.model)?;
+        eprintln!("{} frames; the last is {}", p.frames().len(), last.display());
+    }
+    let summary = Table::from_row(&finished.row)?;
+    summary.write_csv(&dir.join("summary.csv"))?;
+    print(&summary, &dir);
+    Ok(())
+}
+
+fn run_kernel(args: &Args, scene: crate::scene::Scene) -> Result<()> {
     let built = scene.build().map_err(|e| e.in_file(&args.scene))?;
     let dir = args.out.join(&built.name);
     let checkpoint_path = dir.join("checkpoint.bin");
@@ -45,16 +116,7 @@ pub fn run(args: Args) -> Result<()> {
         }
         (false, _) => None,
     };
-    let info = built.model.step_info.clone();
-    eprintln!(
-        "{}: {} elements, {} contacts, Δt = {:.4e} s ({}), {} steps",
-        built.name,
-        built.model.el.len(),
-        built.model.state.contacts.len(),
-        info.dt_s,
-        info.detail,
-        (built.duration_s / info.dt_s).ceil()
-    );
+    announce(&built.name, &built.model, (built.duration_s / built.model.dt_s()).ceil());
     let bar = if args.quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(1000) };
     let mut save = |c: &RunCheckpoint| crate::table::write_atomic(&checkpoint_path, &c.to_bytes());
     let every_steps = args.checkpoint_every_steps;
@@ -70,9 +132,6 @@ pub fn run(args: Args) -> Result<()> {
     if checkpoint_path.exists() {
         std::fs::remove_file(&checkpoint_path).map_err(|e| Error::io(&checkpoint_path, e))?;
     }
-    for (h, v) in summary.header.iter().zip(&summary.rows[0]) {
-        println!("{h:>28} = {v}");
-    }
-    println!("{:>28} = {}", "written", dir.display());
+    print(&summary, &dir);
     Ok(())
 }

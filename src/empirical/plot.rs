@@ -5,10 +5,7 @@
 //! DejaVu Sans), so nothing from the system is needed at build or run time.
 
 use std::path::Path;
-use std::sync::Once;
-
 use plotters::prelude::*;
-use plotters::style::{FontStyle, register_font};
 
 use super::{Formula, Missile, Quantity, Target};
 use crate::error::{Error, Result};
@@ -19,8 +16,6 @@ pub const WIDTH_PX: u32 = 1600;
 pub const HEIGHT_PX: u32 = 800;
 /// Velocities sampled per curve.
 const SAMPLES: usize = 301;
-
-static FONT: Once = Once::new();
 
 /// One colour per registry entry, dark enough on white and far enough apart to tell 22 curves
 /// apart (plotters' palettes include pale yellows).
@@ -49,17 +44,10 @@ const COLORS: [RGBColor; 22] = [
     RGBColor(40, 40, 40),
 ];
 
-fn ensure_font() {
-    FONT.call_once(|| {
-        // The embedded font is valid by construction; a failure would only cost the labels.
-        let _ = register_font("sans-serif", FontStyle::Normal, include_bytes!("../../assets/fonts/DejaVuSans.ttf"));
-    });
-}
-
 /// Draw h_s and h_p against velocity over `v_min_fps..=v_max_fps` to the PNG `path`.
 /// Thick lines: inside the formula's stated validity (or none stated); thin: outside.
 pub fn draw(path: &Path, m: &Missile, t: &Target, v_min_fps: f64, v_max_fps: f64) -> Result<()> {
-    ensure_font();
+    crate::picture::font::ensure();
     let err = |e: &dyn std::fmt::Display| Error::io(path, e);
     let root = BitMapBackend::new(path, (WIDTH_PX, HEIGHT_PX)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;

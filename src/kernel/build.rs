@@ -355,6 +355,7 @@ impl ModelBuilder {
         };
         model.rebuild_neighbours();
         model.state.rebuilds = 0;
+        model.refuse_overlapping_bodies()?;
         model.prime();
         model.state.ledger.initial_j = model.kinetic_energy_j() + model.strain_energy_j();
         Ok(model)

@@ -19,8 +19,10 @@ use super::state::State;
 use crate::error::{Error, Result};
 
 const MAGIC: [u8; 8] = *b"DEMSWCK\0";
-/// Format version: 2 is the serde-derived state (1 was a hand-listed record).
-const VERSION: u32 = 2;
+/// Format version: 2 is the serde-derived state (1 was a hand-listed record); 3 drops the
+/// zero shift of the rate-dependent springs (secant moduli) and adds each bond's mean rate
+/// (`law::rate`).
+const VERSION: u32 = 3;
 
 #[derive(Serialize, Deserialize)]
 struct Header {

@@ -374,6 +374,39 @@ impl Model {
         st.rebuilds += 1;
     }
 
+    /// Bodies must not start inside each other: a pair of elements of two bodies closer than
+    /// r_i + r_j at the start is refused, naming both bodies and elements.
+    fn refuse_overlapping_bodies(&self) -> Result<()> {
+        let (el, st) = (&self.el, &self.state);
+        for c in st.contacts.list.iter().filter(|c| c.bond == Bond::Frictional) {
+            let (i, j) = (c.i as usize, c.j as usize);
+            let (bi, bj) = (el.body[i] as usize, el.body[j] as usize);
+            if bi == bj {
+                continue;
+            }
+            let (p, q) = (st.pos[i], st.pos[j]);
+            let d = (q[0] - p[0]).hypot(q[1] - p[1]);
+            let sum = el.radius[i] + el.radius[j];
+            if d < sum * (1.0 - 1e-9) {
+                let name = |b: usize| self.bodies.get(b).map_or("?", |x| x.name.as_str()).to_string();
+                return Err(Error::input(
+                    "body",
+                    format!(
+                        "bodies {:?} and {:?} overlap at the start: element {i} at ({:.6}, {:.6}) m and element {j} at ({:.6}, {:.6}) m \
+                         are {d:.6e} m apart, less than r_i + r_j = {sum:.6e} m; move one of them (a projectile's standoff must be ≥ 0)",
+                        name(bi),
+                        name(bj),
+                        p[0],
+                        p[1],
+                        q[0],
+                        q[1]
+                    ),
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// Merge the candidate `pairs` (complete for the `covered` pairs) into the contacts.
     #[allow(clippy::too_many_arguments)]
     fn merge(

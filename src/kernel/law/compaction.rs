@@ -104,11 +104,15 @@ impl Params {
     }
 
     /// Return map of a bond in compression. `force_n` is the trial normal force (< 0 in
-    /// compression) with stiffness `kn`; `rest_m` the rest length, moved in by the plastic
-    /// compaction; `length0_m` the initial length; `strength_ratio` the dynamic factor of the
-    /// critical force. Returns the force and the work along the yield line, J.
+    /// compression) with stiffness `kn` = (now, in the last step), `step_m` the change of the
+    /// bond's length over this step; `rest_m` the rest length, moved in by the plastic compaction; `length0_m` the
+    /// initial length; `strength_ratio` the dynamic factor of the critical force. Returns the
+    /// force and the work along the yield line, J: the compaction times the mean of the last
+    /// step's force and the new one (`normal::bonded`), so that a yield line that moves (the
+    /// rate-enhanced critical force decaying, hardening) is booked as central differences
+    /// see it.
     #[inline(always)]
-    pub fn compress(&self, force_n: f64, kn: f64, rest_m: &mut f64, length0_m: f64, strength_ratio: f64) -> (f64, f64) {
+    pub fn compress(&self, force_n: f64, step_m: f64, (kn, kn_last): (f64, f64), rest_m: &mut f64, length0_m: f64, strength_ratio: f64) -> (f64, f64) {
         let p = length0_m - *rest_m;
         let room = self.full_strain * length0_m - p;
         let limit = self.critical_force_n * strength_ratio + self.stiffness_n_per_m * p.max(0.0);
@@ -117,6 +121,7 @@ impl Params {
         }
         let dp = ((-force_n - limit) / (kn + self.stiffness_n_per_m)).min(room);
         *rest_m -= dp;
-        (force_n + kn * dp, (limit + 0.5 * self.stiffness_n_per_m * dp) * dp)
+        let (last, new) = (kn_last * (force_n / kn - step_m), force_n + kn * dp);
+        (new, -0.5 * (last + new) * dp)
     }
 }

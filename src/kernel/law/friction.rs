@@ -74,7 +74,7 @@ pub fn touching<P: PartSet>(c: &mut Contact, k: &ContactClass, g: &Kinematics, d
     let (mut f_t, mut slid) = (0.0, false);
     if P::FRICTION {
         let limit = k.contact.mu * (-f_n) + k.contact.cohesion_n;
-        let (ft, ut, w) = tangential::capped_spring(c.ut_m, g.vt_mps * dt_s, s.kt_n_per_m, limit);
+        let (ft, ut, w) = tangential::capped_spring(c.ut_m, g.vt_mps * dt_s, s.kt_n_per_m, s.kt_n_per_m, limit);
         c.ut_m = ut;
         diss.friction_j += w;
         f_t = ft;

@@ -236,11 +236,10 @@ pub trait PartsVisitor {
 pub struct Extra {
     /// Initial centre distance L0 of a bond, m (eq 6.7; the full-compaction limit).
     pub length0_m: f64,
-    /// Held strain rate, 1/s (see [`rate`]).
+    /// Held strain rate (sets the strengths), 1/s (see [`rate`]).
     pub rate_per_s: f64,
-    /// Zero shift of the normal spring that keeps the force continuous when the modulus
-    /// changes with the rate, m.
-    pub shift_m: f64,
+    /// Mean strain rate (sets the moduli), 1/s.
+    pub rate_mean_per_s: f64,
     /// Modulus ratio the springs had in the last step.
     pub modulus_ratio: f64,
 }
@@ -248,7 +247,7 @@ pub struct Extra {
 impl Extra {
     /// A contact at rest with initial length `length0_m`.
     pub fn new(length0_m: f64) -> Extra {
-        Extra { length0_m, rate_per_s: 0.0, shift_m: 0.0, modulus_ratio: 1.0 }
+        Extra { length0_m, rate_per_s: 0.0, rate_mean_per_s: 0.0, modulus_ratio: 1.0 }
     }
 }
 
@@ -334,31 +333,33 @@ pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &
     let slip = g.vt_mps * dt_s;
     let (mut kn, mut kt) = (k.bond.kn_n_per_m, k.bond.kt_n_per_m);
     let mut ratios = rate::STATIC;
-    let mut elastic_opening = opening;
+    let (mut kn_last, mut kt_last) = (kn, kt);
     if P::RATE && k.rate.enabled {
-        ratios = k.rate.update(&mut x.rate_per_s, g.vn_mps, 1.0 / x.length0_m);
-        let stretch = opening - c.dp_m - x.shift_m;
-        let ratio = if stretch < 0.0 { ratios[0] } else { ratios[1] };
-        if ratio != x.modulus_ratio {
-            // Keep the force at this configuration: the new modulus acts on what follows.
-            let scale = x.modulus_ratio / ratio;
-            diss.rate_work_j += 0.5 * x.modulus_ratio * (kn * stretch * stretch + kt * c.ut_m * c.ut_m) * (1.0 - scale);
-            x.shift_m = opening - c.dp_m - stretch * scale;
-            c.ut_m *= scale;
-            x.modulus_ratio = ratio;
-        }
+        ratios = k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, g.vn_mps, 1.0 / x.length0_m);
+        let ratio = if opening - c.dp_m < 0.0 { ratios[0] } else { ratios[1] };
+        (kn_last, kt_last) = (kn * x.modulus_ratio, kt * x.modulus_ratio);
+        x.modulus_ratio = ratio;
         kn *= ratio;
         kt *= ratio;
-        elastic_opening = opening - x.shift_m;
     }
     let xi = ratios[2];
-    let (mut f_n, w) = normal::bonded(elastic_opening, &mut c.dp_m, kn, k.strength.normal_force_n * xi);
+    let step = g.vn_mps * dt_s;
+    // Elastic stretches of the last step (the rate part books its work with them, below).
+    let (stretch_last, ut_last) = (opening - step - c.dp_m, c.ut_m);
+    let (mut f_n, w) = normal::bonded(opening, step, &mut c.dp_m, kn, kn_last, k.strength.normal_force_n * xi);
     if P::COMPACTION && k.compaction.enabled && f_n < 0.0 {
-        let (f, work) = k.compaction.compress(f_n, kn, &mut c.rest_m, x.length0_m, ratios[3]);
+        let (f, work) = k.compaction.compress(f_n, step, (kn, kn_last), &mut c.rest_m, x.length0_m, ratios[3]);
         f_n = f;
         diss.compaction_work_j += work;
     }
-    let (ft, ut, ws) = tangential::capped_spring(c.ut_m, slip, kt, k.strength.shear_force_n * xi);
+    let (ft, ut, ws) = tangential::capped_spring(c.ut_m, slip, kt, kt_last, k.strength.shear_force_n * xi);
+    if P::RATE && kn != kn_last {
+        // Secant moduli (`rate`): the springs keep their zero; the energy the change of modulus
+        // takes out of them is ½ (K_last − K) × (last stretch) × (new stretch), which with the
+        // return maps' own bookings is the trapezoidal work of the step less the change of the
+        // stored energy, as central differences see it.
+        diss.rate_work_j += 0.5 * ((kn_last - kn) * stretch_last * (f_n / kn) + (kt_last - kt) * ut_last * ut);
+    }
     diss.plastic_work_j += w + ws;
     let at_break = if P::RATE && k.rate.enabled {
         k.rate.opening_at_break_m(k.strength.plastic_opening_at_break_m, k.strength.normal_force_n, xi, kn)
@@ -372,7 +373,6 @@ pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &
         c.dp_m = 0.0;
         c.ut_m = 0.0;
         if P::RATE {
-            x.shift_m = 0.0;
             x.modulus_ratio = 1.0;
         }
         // Breaking needs tension beyond the plateau (opening > δ_p ≥ 0): the pair is apart,
@@ -398,9 +398,8 @@ pub fn stored_energy_j<P: PartSet>(c: &Contact, x: &Extra, k: &ContactClass, g: 
     interact::<P>(&mut probe, &mut px, k, g, dt_s, &mut Dissipation::default());
     match probe.bond {
         Bond::Intact => {
-            let (mut e, mut kn, mut kt) = (g.d_m - probe.rest_m - probe.dp_m, k.bond.kn_n_per_m, k.bond.kt_n_per_m);
+            let (e, mut kn, mut kt) = (g.d_m - probe.rest_m - probe.dp_m, k.bond.kn_n_per_m, k.bond.kt_n_per_m);
             if P::RATE && k.rate.enabled {
-                e -= px.shift_m;
                 kn *= px.modulus_ratio;
                 kt *= px.modulus_ratio;
             }

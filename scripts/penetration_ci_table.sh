@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# The committed outcomes of the CI scene at a few velocities, which tests/penetration_ci.rs
+# recomputes and compares (outcomes exactly, numbers within a stated tolerance).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/penetration_table.sh sweeps/penetration_ci.toml results/penetration/outcomes_ci.csv 500 800 1100 1500

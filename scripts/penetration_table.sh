@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# One summary row per impact velocity for a penetration scene, run two at a time, gathered into
+# one CSV (the header once, rows in velocity order). Never edit its tables by hand.
+#
+#   scripts/penetration_table.sh SCENE OUT.csv V1 V2 ...
+#
+# scripts/penetration_ci_table.sh and scripts/penetration_sweep.sh call it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scene=$1; out=$2; shift 2
+# DEMSWEEP_BIN: a given binary (e.g. a frozen copy while the tree is being edited).
+if [ -z "${DEMSWEEP_BIN:-}" ]; then
+    cargo build --release --quiet
+    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
+else
+    bin=$DEMSWEEP_BIN
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export bin scene work
+printf '%s\n' "$@" | xargs -P "${JOBS:-2}" -I{} sh -c \
+    'RAYON_NUM_THREADS=1 "$bin" run "$scene" --quiet --set projectile.v0_fps={} --out "$work/v{}" > "$work/v{}.log" 2>&1 || { cat "$work/v{}.log" >&2; exit 1; }'
+first=1
+for v in "$@"; do
+    f=$(ls "$work/v$v"/*/summary.csv)
+    if [ $first = 1 ]; then head -n 1 "$f"; first=0; fi
+    tail -n +2 "$f"
+done > "$work/table.csv"
+mkdir -p "$(dirname "$out")"
+mv "$work/table.csv" "$out"
+echo "wrote $out ($# runs)"

@@ -1,0 +1,297 @@
+//! `demsweep ballistic`: the scabbing and perforation thresholds of a penetration scene. Every
+//! velocity of the range in parallel (the sweep engine), then both thresholds bisected
+//! concurrently (each round runs the two midpoints side by side) between the last velocity
+//! without and the first with the outcome, to a tolerance; a Lambert–Jonas fit of the
+//! residual velocities as a second estimate of the ballistic limit; the empirical formulas'
+//! thresholds for the same wall beside them (`thresholds.csv`); a picture.
+//!
+//! Resumable: the runs table is the state. A rerun with the same arguments finds every
+//! finished run (grid or bisection: the bisection's velocities follow from the runs, so they
+//! are the same again) and ends with the same tables. `--shard i/n` runs every n-th grid
+//! velocity only and leaves the bisection to `merge --bisect`.
+
+pub mod bracket;
+pub mod fit;
+pub mod plot;
+pub mod thresholds;
+
+use std::path::{Path, PathBuf};
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+use crate::scene::SceneFile;
+use crate::scene::overrides::Override;
+use crate::sweep::job::{Base, Job};
+use crate::sweep::{Engine, Store};
+use crate::table::{Table, write_atomic};
+use bracket::{Bracket, Finding, Point};
+
+/// The field a ballistic sweep varies.
+pub const V0_FIELD: &str = "projectile.v0_fps";
+
+/// What a ballistic sweep is: written as `sweep.toml` in its folder, so that shards can be
+/// checked against each other and merged.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Manifest {
+    /// The scene file.
+    pub scene: PathBuf,
+    /// Its hash.
+    pub scene_hash: String,
+    /// Lowest velocity, ft/s.
+    pub v0_min_fps: f64,
+    /// Highest velocity, ft/s.
+    pub v0_max_fps: f64,
+    /// Step, ft/s.
+    pub step_fps: f64,
+    /// Bisection tolerance, ft/s.
+    pub tol_fps: f64,
+    /// `i/n`, or empty for the whole sweep.
+    pub shard: String,
+}
+
+/// A shard `i/n`: the grid velocities k with k mod n = i − 1.
+pub fn parse_shard(text: &str) -> Result<(usize, usize)> {
+    let bad = || Error::input("--shard", format!("`{text}` is not i/n with 1 ≤ i ≤ n (e.g. 1/2, 2/2; Slurm: $SLURM_ARRAY_TASK_ID/$SLURM_ARRAY_TASK_COUNT)"));
+    let (i, n) = text.split_once('/').ok_or_else(bad)?;
+    let (i, n): (usize, usize) = (i.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+    if i == 0 || n == 0 || i > n {
+        return Err(bad());
+    }
+    Ok((i, n))
+}
+
+/// How to run a ballistic sweep.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The penetration scene.
+    pub scene: PathBuf,
+    /// Velocities, ft/s (inclusive), and the step.
+    pub v0_min_fps: f64,
+    /// Highest velocity, ft/s.
+    pub v0_max_fps: f64,
+    /// Step, ft/s.
+    pub step_fps: f64,
+    /// Bisection tolerance, ft/s.
+    pub tol_fps: f64,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Threads (0: all cores).
+    pub threads: usize,
+    /// No progress display.
+    pub quiet: bool,
+    /// Remove the folder's old tables first.
+    pub fresh: bool,
+    /// Run one shard of the grid only (no bisection).
+    pub shard: Option<(usize, usize)>,
+}
+
+/// A velocity as the override value (an integer where it is one, so run ids read `850`).
+fn value(v: f64) -> toml::Value {
+    if v.fract() == 0.0 && v.abs() < 1e15 { toml::Value::Integer(v as i64) } else { toml::Value::Float(v) }
+}
+
+/// The run at velocity `v`.
+pub fn job(v_fps: f64, purpose: &str) -> Job {
+    Job { overrides: vec![Override { field: V0_FIELD.into(), value: value(v_fps) }], purpose: purpose.into() }
+}
+
+/// The result of a sweep.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// Scabbing threshold.
+    pub scabbing: Finding,
+    /// Perforation threshold.
+    pub perforation: Finding,
+    /// Lambert–Jonas fit.
+    pub lambert_jonas: Option<fit::Fit>,
+    /// Recht–Ipson fit.
+    pub recht_ipson: Option<fit::Fit>,
+    /// The thresholds table (written as `thresholds.csv`).
+    pub thresholds: Table,
+    /// Runs made now / found done.
+    pub ran: usize,
+    /// Runs found done.
+    pub skipped: usize,
+}
+
+fn load_base(scene: &Path) -> Result<Base> {
+    let base = Base::load(scene)?;
+    if !matches!(base.scene, SceneFile::Penetration(_)) {
+        return Err(Error::input(scene.display().to_string(), "ballistic needs a penetration scene (a file with [penetration])"));
+    }
+    Ok(base)
+}
+
+/// The grid velocities of a plan, checked.
+pub fn velocities(v_min: f64, v_max: f64, step: f64) -> Result<Vec<f64>> {
+    if v_min > v_max {
+        return Err(Error::input("--v0", format!("reversed range {v_min}..{v_max}: the start must not exceed the end")));
+    }
+    crate::cli::range::steps(v_min, v_max, step, "--step")
+}
+
+/// Run the plan.
+pub fn run(plan: &Plan) -> Result<Report> {
+    if !(plan.tol_fps.is_finite() && plan.tol_fps > 0.0) {
+        return Err(Error::input("--tol-fps", format!("must be > 0, got {}", plan.tol_fps)));
+    }
+    let grid = velocities(plan.v0_min_fps, plan.v0_max_fps, plan.step_fps)?;
+    let base = load_base(&plan.scene)?;
+    let manifest = Manifest {
+        scene: plan.scene.clone(),
+        scene_hash: base.hash.clone(),
+        v0_min_fps: plan.v0_min_fps,
+        v0_max_fps: plan.v0_max_fps,
+        step_fps: plan.step_fps,
+        tol_fps: plan.tol_fps,
+        shard: plan.shard.map_or(String::new(), |(i, n)| format!("{i}/{n}")),
+    };
+    let mut store = Store::open(&plan.out, &base, plan.fresh)?;
+    write_atomic(&plan.out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
+    let engine = Engine { base: &base, threads: plan.threads, quiet: plan.quiet };
+    let jobs: Vec<Job> = grid
+        .iter()
+        .enumerate()
+        .filter(|(k, _)| plan.shard.is_none_or(|(i, n)| k % n == i - 1))
+        .map(|(_, &v)| job(v, "grid"))
+        .collect();
+    let done = engine.run(&jobs, &mut store)?;
+    done.check()?;
+    let (mut ran, mut skipped) = (done.ran, done.skipped);
+    if plan.shard.is_some() {
+        let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
+        return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran, skipped });
+    }
+    let report = bisect_and_report(&engine, &mut store, &grid, plan.tol_fps, &plan.out)?;
+    ran += report.ran;
+    skipped += report.skipped;
+    Ok(Report { ran, skipped, ..report })
+}
+
+/// The points of every planned run held by `store`.
+fn points(store: &Store, planned: &[Job], column: &str) -> Vec<Point> {
+    planned
+        .iter()
+        .filter_map(|j| {
+            let v = store.get(j, "v0_fps")?.parse().ok()?;
+            Some(Point { v_fps: v, hit: store.get(j, column)? == "true" })
+        })
+        .collect()
+}
+
+/// Bisect both thresholds from the grid's runs, fit, and write `thresholds.csv` and the plot.
+pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], tol_fps: f64, out: &Path) -> Result<Report> {
+    let mut planned: Vec<Job> = grid.iter().map(|&v| job(v, "grid")).collect();
+    if let Some(missing) = planned.iter().find(|j| !store.has(j)) {
+        return Err(Error::input(out.display().to_string(), format!("the grid run {} is missing: run every shard first", missing.id())));
+    }
+    let (mut ran, mut skipped) = (0, 0);
+    loop {
+        let s = bracket::find(&points(store, &planned, "scabbed"));
+        let p = bracket::find(&points(store, &planned, "perforated"));
+        let mut round: Vec<Job> = Vec::new();
+        if let Some(v) = s.next(tol_fps) {
+            round.push(job(v, "bisect scabbing"));
+        }
+        if let Some(v) = p.next(tol_fps)
+            && round.first().is_none_or(|j| j.id() != job(v, "").id())
+        {
+            round.push(job(v, "bisect perforation"));
+        }
+        if round.is_empty() {
+            break;
+        }
+        let done = engine.run(&round, store)?;
+        done.check()?;
+        ran += done.ran;
+        skipped += done.skipped;
+        planned.extend(round);
+    }
+    let scabbing = bracket::find(&points(store, &planned, "scabbed"));
+    let perforation = bracket::find(&points(store, &planned, "perforated"));
+    let (lambert_jonas, recht_ipson) = fits(store, &planned, &perforation);
+    let SceneFile::Penetration(scene) = &engine.base.scene else { unreachable!("checked at load") };
+    let formulas = thresholds::empirical(scene)?;
+    let counts = (points(store, &planned, "scabbed").len(), points(store, &planned, "perforated").len());
+    let ours = thresholds::Ours { scabbing: &scabbing, perforation: &perforation, lambert_jonas, recht_ipson };
+    let table = thresholds::table(&ours, &formulas, counts);
+    table.write_csv(&out.join("thresholds.csv"))?;
+    let runs = store.table();
+    plot::draw(&out.join("ballistic.png"), &runs, &ours, &formulas, grid)?;
+    Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped })
+}
+
+/// The Lambert–Jonas and Recht–Ipson fits to the perforating runs, V_bl inside the bracket.
+fn fits(store: &Store, planned: &[Job], perforation: &Finding) -> (Option<fit::Fit>, Option<fit::Fit>) {
+    let Bracket::Between { lo_fps, hi_fps } = perforation.bracket else { return (None, None) };
+    let data: Vec<(f64, f64)> = planned
+        .iter()
+        .filter(|j| store.get(j, "perforated") == Some("true"))
+        .filter_map(|j| Some((store.get(j, "v0_fps")?.parse().ok()?, store.get(j, "v_residual_fps")?.parse().ok()?)))
+        .filter(|&(v, _)| v >= hi_fps)
+        .collect();
+    (fit::fit(&data, lo_fps, hi_fps, None), fit::fit(&data, lo_fps, hi_fps, Some(2.0)))
+}
+
+/// `demsweep merge DIR… --out OUT [--bisect]`: the shards' runs as one table, checked to be
+/// of one scene and one grid; with `bisect`, the bisection and the thresholds.
+pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: bool) -> Result<Report> {
+    if dirs.is_empty() {
+        return Err(Error::input("merge", "give the shard folders"));
+    }
+    let read_manifest = |d: &Path| -> Result<Manifest> {
+        let p = d.join("sweep.toml");
+        let text = std::fs::read_to_string(&p).map_err(|e| Error::io(&p, e))?;
+        crate::scene::parse(&text, &p)
+    };
+    let first = read_manifest(&dirs[0])?;
+    let mut merged: Option<Store> = None;
+    for d in dirs {
+        let m = read_manifest(d)?;
+        let same = |a: &Manifest, b: &Manifest| {
+            a.scene_hash == b.scene_hash && a.v0_min_fps == b.v0_min_fps && a.v0_max_fps == b.v0_max_fps && a.step_fps == b.step_fps && a.tol_fps == b.tol_fps
+        };
+        if m.scene_hash != first.scene_hash {
+            return Err(Error::input(
+                d.display().to_string(),
+                format!("is a sweep of another scene (scene_hash {}, not {} of {}): shards of different scenes cannot be merged", m.scene_hash, first.scene_hash, dirs[0].display()),
+            ));
+        }
+        if !same(&m, &first) {
+            return Err(Error::input(d.display().to_string(), format!("was swept over another grid or tolerance than {}", dirs[0].display())));
+        }
+        let s = Store::read(d)?;
+        match merged.as_mut() {
+            None => merged = Some(s),
+            Some(all) => all.absorb(s)?,
+        }
+    }
+    let mut store = merged.expect("at least one shard");
+    let base = load_base(&first.scene)?;
+    if base.hash != first.scene_hash {
+        return Err(Error::input(
+            first.scene.display().to_string(),
+            format!("has changed since the shards ran (scene_hash {} now, {} then): rerun the shards", base.hash, first.scene_hash),
+        ));
+    }
+    store.dir = out.to_path_buf();
+    if Store::csv_path(out).exists() {
+        store.absorb(Store::read(out)?)?;
+    }
+    let grid = velocities(first.v0_min_fps, first.v0_max_fps, first.step_fps)?;
+    let missing: Vec<String> = grid.iter().map(|&v| job(v, "grid")).filter(|j| !store.has(j)).map(|j| j.id()).collect();
+    if !missing.is_empty() {
+        return Err(Error::input("merge", format!("the shards miss grid runs {}: run every shard first", missing.join(", "))));
+    }
+    store.write()?;
+    let manifest = Manifest { shard: String::new(), ..first.clone() };
+    write_atomic(&out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
+    let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
+    if !bisect {
+        return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran: 0, skipped: store.len() });
+    }
+    let engine = Engine { base: &base, threads, quiet };
+    bisect_and_report(&engine, &mut store, &grid, first.tol_fps, out)
+}

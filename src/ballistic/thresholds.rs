@@ -1,0 +1,190 @@
+//! `thresholds.csv`: one row per threshold estimate — ours (bisection; Lambert–Jonas and
+//! Recht–Ipson fits of the ballistic limit) and each empirical formula's for the same missile
+//! and wall (`empirical`, issue [2/5]) — with the empirical band beside every row: the lowest
+//! and highest velocity among the formulas that are inside (or state no) validity at it.
+
+use super::bracket::{Bracket, Finding};
+use super::fit::Fit;
+use crate::cases::penetration::PenetrationScene;
+use crate::empirical::{Missile, Nose as EmpiricalNose, Target, table as empirical_table};
+use crate::error::Result;
+use crate::shape::Nose;
+use crate::table::Table;
+
+/// The largest aggregate of the source's concrete, in (the empirical module's default: the
+/// scene's concrete does not carry it; only Whiffen and Kar read it).
+pub const AGGREGATE_IN: f64 = 0.75;
+
+/// The scene's projectile and wall as the empirical formulas see them (the 3D missile of the
+/// source's scenario: its weight and diameter, not the 2D slice's mass).
+pub fn empirical_inputs(s: &PenetrationScene) -> Result<(Missile, Target)> {
+    let nose = match s.projectile.nose {
+        Nose::Flat => EmpiricalNose::Flat,
+        Nose::Hemispherical => EmpiricalNose::Spherical,
+        Nose::Ogive => EmpiricalNose::VerySharp,
+    };
+    let c = &s.concrete;
+    // lb·s²/in⁴ → lb/ft³ of weight: ρ g, g = 386.09 in/s², 1728 in³/ft³.
+    let density_pcf = c.density_lbs2_per_in4 * 386.088_582_677 * 1728.0;
+    let m = Missile::new(s.projectile.weight_lb, s.projectile.width_in, nose, s.projectile.youngs_modulus_psi)?;
+    let t = Target::new(c.compressive_strength_psi, c.tensile_strength_psi, density_pcf, s.target.depth_in, AGGREGATE_IN)?;
+    Ok((m, t))
+}
+
+/// One formula's threshold velocity, ft/s, and whether it is usable there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Empirical {
+    /// `scabbing` or `perforation`.
+    pub threshold: &'static str,
+    /// Formula id and variant.
+    pub method: String,
+    /// The velocity (a number) or what the formula says instead.
+    pub cell: String,
+    /// The velocity, ft/s.
+    pub v_fps: Option<f64>,
+    /// Inside (or without) stated validity there.
+    pub usable: bool,
+    /// Validity text.
+    pub validity: String,
+}
+
+/// Every formula's scabbing velocity and ballistic limit for the scene's wall.
+pub fn empirical(s: &PenetrationScene) -> Result<Vec<Empirical>> {
+    let (m, t) = empirical_inputs(s)?;
+    let mut out = Vec::new();
+    for r in empirical_table::thresholds(&m, &t) {
+        for (threshold, th) in [("scabbing", &r.scabbing), ("perforation", &r.perforation)] {
+            let (usable, validity) = match th {
+                crate::empirical::inverse::Threshold::Velocity { validity, .. } => (validity.is_usable(), validity.to_string()),
+                _ => (false, String::new()),
+            };
+            if matches!(th, crate::empirical::inverse::Threshold::NotDefined) {
+                continue;
+            }
+            out.push(Empirical {
+                threshold,
+                method: format!("empirical {} ({})", r.formula.id(), r.formula.variant()),
+                cell: th.cell(1),
+                v_fps: th.v_fps(),
+                usable,
+                validity,
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The band of usable formula velocities for a threshold, ft/s.
+pub fn band(rows: &[Empirical], threshold: &str) -> Option<(f64, f64)> {
+    let v: Vec<f64> = rows.iter().filter(|r| r.threshold == threshold && r.usable).filter_map(|r| r.v_fps).collect();
+    if v.is_empty() {
+        return None;
+    }
+    Some((v.iter().cloned().fold(f64::INFINITY, f64::min), v.iter().cloned().fold(f64::NEG_INFINITY, f64::max)))
+}
+
+/// Our estimates.
+pub struct Ours<'a> {
+    /// Scabbing.
+    pub scabbing: &'a Finding,
+    /// Perforation.
+    pub perforation: &'a Finding,
+    /// Lambert–Jonas fit.
+    pub lambert_jonas: Option<Fit>,
+    /// Recht–Ipson fit.
+    pub recht_ipson: Option<Fit>,
+}
+
+const HEADER: [&str; 13] = [
+    "threshold",
+    "method",
+    "v_low_fps",
+    "v_high_fps",
+    "v_est_fps",
+    "fit_a",
+    "fit_p",
+    "fit_rms_fps",
+    "points",
+    "band_min_fps",
+    "band_max_fps",
+    "inside_band",
+    "note",
+];
+
+fn num(v: Option<f64>) -> String {
+    v.map_or(String::new(), |v| format!("{v:.3}"))
+}
+
+/// The thresholds table.
+pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, usize)) -> Table {
+    let mut rows = Vec::new();
+    let inside = |t: &str, v: Option<f64>| match (band(formulas, t), v) {
+        (Some((lo, hi)), Some(v)) => (v >= lo && v <= hi).to_string(),
+        _ => String::new(),
+    };
+    let bands = |t: &str| band(formulas, t).map_or((String::new(), String::new()), |(a, b)| (num(Some(a)), num(Some(b))));
+    for (name, f, n) in [("scabbing", ours.scabbing, bracket_points.0), ("perforation", ours.perforation, bracket_points.1)] {
+        let (lo, hi) = match f.bracket {
+            Bracket::Between { lo_fps, hi_fps } => (Some(lo_fps), Some(hi_fps)),
+            Bracket::AtOrBelow(v) => (None, Some(v)),
+            Bracket::NotReached(v) => (Some(v), None),
+            Bracket::Empty => (None, None),
+        };
+        let est = f.estimate_fps();
+        let (bmin, bmax) = bands(name);
+        rows.push(vec![
+            name.into(),
+            "bisection".into(),
+            num(lo),
+            num(hi),
+            num(est),
+            String::new(),
+            String::new(),
+            String::new(),
+            n.to_string(),
+            bmin,
+            bmax,
+            inside(name, est),
+            f.note(name),
+        ]);
+    }
+    for (method, fit) in [("lambert-jonas", ours.lambert_jonas), ("recht-ipson", ours.recht_ipson)] {
+        let (bmin, bmax) = bands("perforation");
+        let note = if fit.is_none() { "too few perforating runs to fit".to_string() } else { "V_r = a (V^p - V_bl^p)^(1/p) over the perforating runs".to_string() };
+        rows.push(vec![
+            "perforation".into(),
+            method.into(),
+            String::new(),
+            String::new(),
+            num(fit.map(|f| f.v_bl_fps)),
+            fit.map_or(String::new(), |f| format!("{:.4}", f.a)),
+            fit.map_or(String::new(), |f| format!("{:.3}", f.p)),
+            num(fit.map(|f| f.rms_fps)),
+            fit.map_or(String::new(), |f| f.points.to_string()),
+            bmin,
+            bmax,
+            inside("perforation", fit.map(|f| f.v_bl_fps)),
+            note,
+        ]);
+    }
+    for e in formulas {
+        let (bmin, bmax) = bands(e.threshold);
+        let note = if e.usable { e.validity.clone() } else if e.v_fps.is_some() { format!("outside validity: {}", e.validity) } else { e.cell.clone() };
+        rows.push(vec![
+            e.threshold.into(),
+            e.method.clone(),
+            String::new(),
+            String::new(),
+            num(e.v_fps),
+            String::new(),
+            String::new(),
+            String::new(),
+            String::new(),
+            bmin,
+            bmax,
+            inside(e.threshold, e.v_fps),
+            note,
+        ]);
+    }
+    Table { header: HEADER.iter().map(|s| s.to_string()).collect(), rows }
+}

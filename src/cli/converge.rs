@@ -1,0 +1,58 @@
+//! `demsweep converge --mesh 3 [--case cantilever|cracked-plate|penetration] [--ratio 2]`.
+
+use std::path::PathBuf;
+
+use crate::converge::{self, Case, Class, Plan};
+use crate::error::Result;
+
+/// Arguments of `demsweep converge`.
+#[derive(Debug, clap::Args)]
+pub struct Args {
+    /// Number of refinement levels, from level 0.
+    #[arg(long, default_value_t = 3)]
+    pub mesh: u32,
+    /// The case.
+    #[arg(long, value_enum, default_value = "penetration")]
+    pub case: Case,
+    /// Element-size ratio between levels (each case has its own: cantilever 3, the others 2).
+    #[arg(long)]
+    pub ratio: Option<f64>,
+    /// Penetration: the scene.
+    #[arg(long, default_value = "sweeps/penetration.toml")]
+    pub scene: PathBuf,
+    /// Penetration: impact velocity, ft/s.
+    #[arg(long, default_value_t = 500.0)]
+    pub v0: f64,
+    /// Output folder.
+    #[arg(long, default_value = "results/converge")]
+    pub out: PathBuf,
+    /// Threads (penetration levels run in parallel, one thread each).
+    #[arg(long, default_value_t = 0)]
+    pub threads: usize,
+    /// No progress display.
+    #[arg(long)]
+    pub quiet: bool,
+}
+
+/// Run the study and print its tables.
+pub fn run(args: Args) -> Result<()> {
+    let plan = Plan {
+        case: args.case,
+        mesh: args.mesh,
+        ratio: args.ratio.unwrap_or(args.case.ratio()),
+        scene: args.scene,
+        v0_fps: args.v0,
+        out: args.out.clone(),
+        threads: args.threads,
+        quiet: args.quiet,
+    };
+    let report = converge::run(&plan)?;
+    let (levels, summary) = converge::tables(&report);
+    print!("{}", String::from_utf8_lossy(&levels.to_csv()?));
+    print!("{}", String::from_utf8_lossy(&summary.to_csv()?));
+    if let Class::None(why) = &report.class {
+        println!("no observed order: {why}");
+    }
+    println!("tables in {}", args.out.display());
+    Ok(())
+}

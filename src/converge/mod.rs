@@ -1,0 +1,304 @@
+//! `demsweep converge`: a case at successive refinements, its observed order, Richardson
+//! extrapolate and GCI (eq 4.1; Celik et al. 2008 where the ratios differ), its convergence
+//! class, and what each digit costs (error against wall time).
+//!
+//! Cases: the cantilever's tip amplitude and the cracked plate's critical far-field stress
+//! (energy criterion, close-packed, the seed's roller grips) — the validation studies of [1/5] —
+//! and the penetration depth at a velocity (the calibrated scene, its level varied through the
+//! sweep engine, so the levels run in parallel, one thread each, and a rerun reuses them).
+
+pub mod plot;
+
+use std::path::{Path, PathBuf};
+
+use crate::analysis::{Convergence, NotConvergent, celik, richardson};
+use crate::cases::cracked_plate::{self, Grips, Setup, Study};
+use crate::cases::{cantilever, study};
+use crate::error::{Error, Result};
+use crate::scene::overrides::Override;
+use crate::sweep::job::{Base, Job};
+use crate::sweep::{Engine, Store};
+use crate::table::Table;
+
+/// Which case.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Case {
+    /// Cantilever tip amplitude (refines by 3 per level).
+    Cantilever,
+    /// Cracked plate critical far-field stress, energy criterion (refines by 2).
+    CrackedPlate,
+    /// Penetration depth at `--v0` (refines by 2: each level halves every element radius).
+    Penetration,
+}
+
+impl Case {
+    /// Name in file names.
+    pub fn name(self) -> &'static str {
+        match self {
+            Case::Cantilever => "cantilever",
+            Case::CrackedPlate => "cracked_plate",
+            Case::Penetration => "penetration",
+        }
+    }
+
+    /// The element-size ratio between levels the case is built with.
+    pub fn ratio(self) -> f64 {
+        match self {
+            Case::Cantilever => cantilever::REFINEMENT,
+            Case::CrackedPlate => cracked_plate::REFINEMENT,
+            Case::Penetration => 2.0,
+        }
+    }
+
+    /// The quantity's column.
+    pub fn quantity(self) -> &'static str {
+        match self {
+            Case::Cantilever => "tip_amplitude_m",
+            Case::CrackedPlate => "peak_stress_pa",
+            Case::Penetration => "depth_in",
+        }
+    }
+}
+
+/// One level's result.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Level {
+    /// Refinement level.
+    pub level: u32,
+    /// Elements.
+    pub elements: usize,
+    /// Element radius, m.
+    pub h_m: f64,
+    /// Steps.
+    pub steps: u64,
+    /// Time step, s.
+    pub dt_s: f64,
+    /// Wall time, s.
+    pub wall_s: f64,
+    /// The quantity.
+    pub value: f64,
+}
+
+/// How the three finest levels converge.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Class {
+    /// Monotone: an order, an extrapolate, a GCI (eq 4.1 and Celik's form).
+    Monotone {
+        /// Eq 4.1 with the case's constant ratio.
+        eq41: Convergence,
+        /// Celik et al. 2008 from the element sizes.
+        celik: Convergence,
+    },
+    /// No order: why (oscillatory, divergent, indeterminate).
+    None(NotConvergent),
+    /// Fewer than three levels.
+    TooFew,
+}
+
+impl Class {
+    /// Word for the table.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Class::Monotone { .. } => "monotone",
+            Class::None(NotConvergent::Oscillatory { .. }) => "oscillatory",
+            Class::None(NotConvergent::Divergent { .. }) => "divergent",
+            Class::None(_) => "indeterminate",
+            Class::TooFew => "too few levels",
+        }
+    }
+}
+
+/// A finished study.
+#[derive(Debug, Clone)]
+pub struct Report {
+    /// The case.
+    pub case: Case,
+    /// Levels, coarse to fine.
+    pub levels: Vec<Level>,
+    /// The class of the three finest.
+    pub class: Class,
+}
+
+/// Classify the three finest levels.
+pub fn classify(levels: &[Level], ratio: f64) -> Class {
+    let n = levels.len();
+    if n < 3 {
+        return Class::TooFew;
+    }
+    let l = &levels[n - 3..];
+    let phi = [l[0].value, l[1].value, l[2].value];
+    match (richardson(phi, ratio), celik(phi, [l[0].h_m, l[1].h_m, l[2].h_m])) {
+        (Ok(eq41), Ok(c)) => Class::Monotone { eq41, celik: c },
+        (Err(e), _) | (_, Err(e)) => Class::None(e),
+    }
+}
+
+/// Arguments of a study.
+#[derive(Debug, Clone)]
+pub struct Plan {
+    /// The case.
+    pub case: Case,
+    /// Number of levels (from level 0).
+    pub mesh: u32,
+    /// Ratio asked for (must be the case's).
+    pub ratio: f64,
+    /// Penetration: the scene and the velocity, ft/s.
+    pub scene: PathBuf,
+    /// Impact velocity, ft/s.
+    pub v0_fps: f64,
+    /// Output folder.
+    pub out: PathBuf,
+    /// Threads (penetration levels in parallel).
+    pub threads: usize,
+    /// No progress display.
+    pub quiet: bool,
+}
+
+/// Run the study; writes `<case>.csv`, `<case>_summary.csv` and `<case>_speed.png` under `out`.
+pub fn run(plan: &Plan) -> Result<Report> {
+    if plan.mesh < 2 {
+        return Err(Error::input("--mesh", format!("needs at least 2 levels (3 for an observed order), got {}", plan.mesh)));
+    }
+    if plan.mesh > 4 {
+        return Err(Error::input("--mesh", format!("at most 4 levels here (the fourth penetration level has 870 000 elements), got {}", plan.mesh)));
+    }
+    if (plan.ratio - plan.case.ratio()).abs() > 1e-12 {
+        return Err(Error::input(
+            "--ratio",
+            format!("the {} case refines by {} per level (its meshes are built so); got {}", plan.case.name(), plan.case.ratio(), plan.ratio),
+        ));
+    }
+    let levels = match plan.case {
+        Case::Cantilever => (0..plan.mesh)
+            .map(|l| {
+                let lv = study::timed(l, || {
+                    let (a, r) = cantilever::run(l)?;
+                    Ok((cantilever::columns(l) * cantilever::rows(l), a, r))
+                })?;
+                Ok(Level { level: l, elements: lv.elements, h_m: cantilever::radius_m(l), steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value })
+            })
+            .collect::<Result<Vec<_>>>()?,
+        Case::CrackedPlate => {
+            let setup = Setup::with_grips(Grips::Rollers);
+            (0..plan.mesh)
+                .map(|l| {
+                    let lv = study::timed(l, || {
+                        let (p, r) = cracked_plate::run(Study::EnergyClosePacked, l, true, &setup)?;
+                        Ok((p.elements, p.stress_pa, r))
+                    })?;
+                    let h_m = Study::EnergyClosePacked.radius_m(l);
+                    Ok(Level { level: l, elements: lv.elements, h_m, steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value })
+                })
+                .collect::<Result<Vec<_>>>()?
+        }
+        Case::Penetration => penetration(plan)?,
+    };
+    let class = classify(&levels, plan.ratio);
+    let report = Report { case: plan.case, levels, class };
+    let (levels_table, summary) = tables(&report);
+    levels_table.write_csv(&plan.out.join(format!("{}.csv", plan.case.name())))?;
+    summary.write_csv(&plan.out.join(format!("{}_summary.csv", plan.case.name())))?;
+    plot::draw(&plan.out.join(format!("{}_speed.png", plan.case.name())), &report)?;
+    Ok(report)
+}
+
+fn penetration(plan: &Plan) -> Result<Vec<Level>> {
+    let base = Base::load(&plan.scene)?;
+    let crate::scene::SceneFile::Penetration(scene) = &base.scene else {
+        return Err(Error::input(plan.scene.display().to_string(), "converge --case penetration needs a penetration scene"));
+    };
+    let r0_m = {
+        let mut s = scene.clone();
+        s.penetration.level = 0;
+        s.concrete_radius_m()
+    };
+    let jobs: Vec<Job> = (0..plan.mesh)
+        .map(|l| Job {
+            overrides: vec![
+                Override { field: "penetration.level".into(), value: toml::Value::Integer(l as i64) },
+                Override { field: crate::ballistic::V0_FIELD.into(), value: toml::Value::Float(plan.v0_fps) },
+            ],
+            purpose: "converge".into(),
+        })
+        .collect();
+    let dir = plan.out.join("penetration_runs");
+    let mut store = Store::open(&dir, &base, false)?;
+    let engine = Engine { base: &base, threads: plan.threads, quiet: plan.quiet };
+    engine.run(&jobs, &mut store)?.check()?;
+    jobs.iter()
+        .enumerate()
+        .map(|(l, j)| {
+            let f = |c: &str| -> Result<f64> {
+                store.get(j, c).and_then(|v| v.parse().ok()).ok_or_else(|| Error::input(dir.display().to_string(), format!("run {} has no {c}", j.id())))
+            };
+            Ok(Level {
+                level: l as u32,
+                elements: f("elements")? as usize,
+                h_m: r0_m * 0.5f64.powi(l as i32),
+                steps: f("steps")? as u64,
+                dt_s: f("dt_s")?,
+                wall_s: f("wall_s")?,
+                value: f("depth_in")?,
+            })
+        })
+        .collect()
+}
+
+/// The reference the errors are taken against: the extrapolate where the levels converge
+/// monotonically, otherwise the finest level (and the table says so).
+pub fn reference(r: &Report) -> (f64, &'static str) {
+    match &r.class {
+        Class::Monotone { eq41, .. } => (eq41.extrapolate, "richardson extrapolate"),
+        _ => (r.levels.last().map_or(f64::NAN, |l| l.value), "finest level (no extrapolate: not monotone)"),
+    }
+}
+
+/// The levels table (with each level's error against the reference) and the summary.
+pub fn tables(r: &Report) -> (Table, Table) {
+    let (reference, against) = reference(r);
+    let q = r.case.quantity();
+    let header: Vec<String> = ["level", "elements", "h_m", "steps", "dt_s", "element_steps", "wall_s", q, "error_rel", "error_against"].iter().map(|s| s.to_string()).collect();
+    let rows = r
+        .levels
+        .iter()
+        .map(|l| {
+            vec![
+                l.level.to_string(),
+                l.elements.to_string(),
+                format!("{:.6e}", l.h_m),
+                l.steps.to_string(),
+                format!("{:.6e}", l.dt_s),
+                format!("{:.4e}", l.elements as f64 * l.steps as f64),
+                format!("{:.3}", l.wall_s),
+                format!("{:.9e}", l.value),
+                format!("{:.4e}", (l.value - reference) / reference),
+                against.to_string(),
+            ]
+        })
+        .collect();
+    let levels = Table { header, rows };
+    let sh: Vec<String> = ["case", "quantity", "ratio", "class", "R", "order_eq41", "order_celik", "extrapolate", "gci_fine_pct", "note"].iter().map(|s| s.to_string()).collect();
+    let blank = String::new;
+    let row = match &r.class {
+        Class::Monotone { eq41, celik } => vec![
+            r.case.name().into(),
+            q.into(),
+            r.case.ratio().to_string(),
+            r.class.word().into(),
+            format!("{:.6}", eq41.ratio),
+            format!("{:.4}", eq41.order),
+            format!("{:.4}", celik.order),
+            format!("{:.9e}", eq41.extrapolate),
+            format!("{:.4}", 100.0 * eq41.gci_fine),
+            "three finest levels".into(),
+        ],
+        Class::None(why) => vec![r.case.name().into(), q.into(), r.case.ratio().to_string(), r.class.word().into(), blank(), blank(), blank(), blank(), blank(), why.to_string()],
+        Class::TooFew => vec![r.case.name().into(), q.into(), r.case.ratio().to_string(), r.class.word().into(), blank(), blank(), blank(), blank(), blank(), "three levels give an order".into()],
+    };
+    (levels, Table { header: sh, rows: vec![row] })
+}
+
+/// Default output folder.
+pub fn default_out() -> &'static Path {
+    Path::new("results/converge")
+}

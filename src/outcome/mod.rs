@@ -1,0 +1,335 @@
+//! What a penetration run did: penetration depth, scabbing, perforation, front-face spall, and
+//! when the run is settled. Reads the model, never changes it.
+//!
+//! Definitions (the front face is the top of the target's top row of disks at the start; the
+//! back face y = 0; the projectile comes from above; "attached" material is connected through
+//! intact bonds to a support):
+//! * **penetration depth**: the deepest point of the projectile (its lowest disk's bottom) below
+//!   the original front face, the largest over the run. **Relative depth**: the same less the
+//!   beam's own deflection under the impact point (the mean downward displacement of the
+//!   attached back-face elements within half a projectile width of the impact point), the
+//!   largest over the run: what a crater gauge on a bending beam would read.
+//! * **fragment**: a connected set of target elements over intact bonds (a union-find), or a
+//!   single element, that holds no supported element.
+//! * **scabbing**: a fragment holding back-face material (elements that started within one
+//!   element diameter of the back face) moving away from the back face, i.e. downward faster
+//!   than the attached back face beside it (within one projectile width) by more than
+//!   `separation_fps`. Reported: the number of such fragments, their mass, and the first time
+//!   one was seen.
+//! * **front-face spall (crater)**: the same for front-face material moving up, away from the
+//!   front face.
+//! * **perforation**: the projectile's rearmost point below the original back face and below
+//!   every attached target element within the projectile's width: wholly past the back face.
+//!   Residual velocity: the speed of the projectile's centre of mass, when first perforated and
+//!   at the end.
+//! * **settled** (the stop rule): the projectile has turned back (`rebounded`: its centre moves
+//!   out along the impact axis) or stopped (`embedded`: its centre's speed is below 1 % of the
+//!   impact speed), and the attached target has been quiet for `quiet_s` (its count of intact
+//!   bonds has not changed: no crack grew and nothing came loose; debris grinding against
+//!   debris does not count); or the projectile perforated and has been clear of the back face,
+//!   by two element diameters, for `quiet_s` (`perforated`), time for the back face to shed
+//!   what the exit loosened. A run that never settles ends at its time cap (`time_cap`); the
+//!   outcome is then what was seen up to the cap.
+
+pub mod fragments;
+
+use std::ops::Range;
+
+use serde::{Deserialize, Serialize};
+
+use crate::cases::penetration::{Layout, OutcomeSpec};
+use crate::error::{Error, Result};
+use crate::kernel::Model;
+use crate::kernel::contacts::Bond;
+use crate::run::StopRule;
+use crate::units::{M_PER_IN, fps_to_mps, kg_to_lb, mps_to_fps};
+
+pub use fragments::{Fragment, UnionFind};
+
+/// The outcome of a run, as the summary row reports it.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Outcome {
+    /// Peak depth of the nose below the original front face, in.
+    pub depth_in: f64,
+    /// Peak depth less the beam's deflection under the impact point, in.
+    pub depth_rel_in: f64,
+    /// When the peak depth was reached, s.
+    pub depth_time_s: f64,
+    /// Scab fragments seen.
+    pub scabbed: bool,
+    /// Their mass at the end, lb (per the mapping's slice).
+    pub scab_mass_lb: f64,
+    /// Their number at the end.
+    pub scab_fragments: u64,
+    /// First time a scab was seen, s (empty: never).
+    pub scab_time_s: Option<f64>,
+    /// The projectile went through.
+    pub perforated: bool,
+    /// Its centre's speed when it first was through, ft/s (0 when not).
+    pub v_residual_fps: f64,
+    /// When it first was through, s.
+    pub perforation_time_s: Option<f64>,
+    /// Its centre's speed at the end, ft/s.
+    pub v_final_fps: f64,
+    /// Front-face spall (crater) mass at the end, lb.
+    pub spall_mass_lb: f64,
+    /// Front-face spall fragments at the end.
+    pub spall_fragments: u64,
+    /// First time spall was seen, s.
+    pub spall_time_s: Option<f64>,
+}
+
+/// What the detector keeps between looks (it travels in checkpoints).
+#[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
+pub struct Tracking {
+    /// Peak depth so far, m.
+    pub depth_m: f64,
+    /// When, s.
+    pub depth_time_s: f64,
+    /// Peak relative depth so far, m.
+    pub depth_rel_m: f64,
+    /// First scab, s.
+    pub scab_time_s: Option<f64>,
+    /// First spall, s.
+    pub spall_time_s: Option<f64>,
+    /// First perforation, s.
+    pub perforation_time_s: Option<f64>,
+    /// Projectile speed then, m/s.
+    pub v_residual_mps: f64,
+    /// Intact bonds of the attached target at the last look.
+    pub attached_bonds: u64,
+    /// Last look at which that count had changed, s.
+    pub last_break_s: f64,
+    /// Since when the projectile has been clear of the back face, s.
+    pub clear_since_s: Option<f64>,
+}
+
+/// One look at the model, reduced to what the outcome and the stop rule need.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Look {
+    /// Time, s.
+    pub time_s: f64,
+    /// Depth of the projectile's lowest point below the front face, m.
+    pub depth_m: f64,
+    /// The beam's deflection under the impact point (down positive), m.
+    pub deflection_m: f64,
+    /// Scab fragments, their mass (kg).
+    pub scab: (u64, f64),
+    /// Spall fragments, their mass (kg).
+    pub spall: (u64, f64),
+    /// The projectile is wholly past the back face.
+    pub through: bool,
+    /// ... and has cleared it by two element diameters.
+    pub clear: bool,
+    /// Its centre's velocity along the impact axis, m/s (> 0 going in).
+    pub v_axial_mps: f64,
+    /// Its centre's speed, m/s.
+    pub speed_mps: f64,
+    /// Intact bonds between attached target elements.
+    pub attached_bonds: u64,
+}
+
+impl Tracking {
+    /// Take in a look; returns why the run is settled, if it is.
+    pub fn observe(&mut self, l: &Look, spec: &OutcomeSpec, v0_mps: f64) -> Option<&'static str> {
+        if l.depth_m > self.depth_m {
+            self.depth_m = l.depth_m;
+            self.depth_time_s = l.time_s;
+        }
+        self.depth_rel_m = self.depth_rel_m.max(l.depth_m - l.deflection_m);
+        if l.scab.0 > 0 && self.scab_time_s.is_none() {
+            self.scab_time_s = Some(l.time_s);
+        }
+        if l.spall.0 > 0 && self.spall_time_s.is_none() {
+            self.spall_time_s = Some(l.time_s);
+        }
+        if l.through && self.perforation_time_s.is_none() {
+            self.perforation_time_s = Some(l.time_s);
+            self.v_residual_mps = l.speed_mps;
+        }
+        if l.attached_bonds != self.attached_bonds {
+            self.attached_bonds = l.attached_bonds;
+            self.last_break_s = l.time_s;
+        }
+        if l.through {
+            if !l.clear {
+                self.clear_since_s = None;
+                return None;
+            }
+            let since = *self.clear_since_s.get_or_insert(l.time_s);
+            return (l.time_s - since >= spec.quiet_s).then_some("perforated");
+        }
+        self.clear_since_s = None;
+        if l.time_s - self.last_break_s < spec.quiet_s {
+            return None;
+        }
+        if l.speed_mps < 0.01 * v0_mps {
+            return Some("embedded");
+        }
+        (l.v_axial_mps < 0.0).then_some("rebounded")
+    }
+}
+
+/// The detector: where the target, the projectile and the faces are.
+#[derive(Debug, Clone)]
+pub struct Detector {
+    /// The scene's layout.
+    pub layout: Layout,
+    /// Thresholds.
+    pub spec: OutcomeSpec,
+    target: Range<usize>,
+    projectile: Range<usize>,
+    /// Per target element: started on the (back, front) face.
+    faces: Vec<(bool, bool)>,
+    /// Target elements of the back face under the impact point.
+    under: Vec<usize>,
+    /// The evolving record.
+    pub tracking: Tracking,
+}
+
+impl Detector {
+    /// A detector for a model built from a penetration scene.
+    pub fn new(model: &Model, layout: Layout, spec: OutcomeSpec) -> Result<Detector> {
+        let body = |name: &str| model.body(name).map(|b| b.elements.clone()).ok_or_else(|| Error::input("body", format!("the model has no body {name:?}")));
+        let (target, projectile) = (body("target")?, body("projectile")?);
+        let d = 2.0 * layout.concrete_radius_m;
+        let faces: Vec<(bool, bool)> = target.clone().map(|e| {
+            let y = model.el.initial[e][1];
+            (y - model.el.radius[e] < layout.back_y_m + d, y + model.el.radius[e] > layout.front_y_m - d)
+        }).collect();
+        let under = target
+            .clone()
+            .filter(|&e| faces[e - target.start].0 && (model.el.initial[e][0] - layout.impact_x_m).abs() <= 0.5 * layout.projectile_width_m)
+            .collect();
+        Ok(Detector { layout, spec, target, projectile, faces, under, tracking: Tracking::default() })
+    }
+
+    /// Look at the model.
+    pub fn look(&self, m: &Model) -> Look {
+        let (st, el) = (&m.state, &m.el);
+        let lay = &self.layout;
+        // The projectile.
+        let (mut mass, mut mom, mut lowest, mut rear) = (0.0, [0.0; 2], f64::INFINITY, f64::NEG_INFINITY);
+        let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
+        for e in self.projectile.clone() {
+            let (p, v, r, me) = (st.pos[e], st.vel[e], el.radius[e], el.mass[e]);
+            mass += me;
+            mom = [mom[0] + me * v[0], mom[1] + me * v[1]];
+            lowest = lowest.min(p[1] - r);
+            rear = rear.max(p[1] + r);
+            xmin = xmin.min(p[0] - r);
+            xmax = xmax.max(p[0] + r);
+        }
+        let v = [mom[0] / mass, mom[1] / mass];
+        // Fragments.
+        let (frags, of) = fragments::fragments(m, self.target.clone(), |e| self.faces[e - self.target.start]);
+        let attached = |e: usize| frags[of[e - self.target.start] as usize].supported;
+        let under: Vec<usize> = self.under.iter().copied().filter(|&e| attached(e)).collect();
+        let deflection = if under.is_empty() {
+            0.0
+        } else {
+            -under.iter().map(|&e| m.displacement_m(e)[1]).sum::<f64>() / under.len() as f64
+        };
+        // The attached faces' mean vertical speed in bins one projectile width wide (zero where
+        // nothing is attached), read over the three bins around a fragment.
+        let sep = fps_to_mps(self.spec.separation_fps);
+        let w = lay.projectile_width_m;
+        let bin = |x: f64| (x / w).floor().clamp(-1e6, 1e6) as i64;
+        let mut bins: std::collections::BTreeMap<(bool, i64), (usize, f64)> = Default::default();
+        for e in self.target.clone() {
+            let (b, f) = self.faces[e - self.target.start];
+            if (b || f) && attached(e) {
+                for (face, on) in [(true, b), (false, f)] {
+                    if on {
+                        let s = bins.entry((face, bin(st.pos[e][0]))).or_default();
+                        s.0 += 1;
+                        s.1 += st.vel[e][1];
+                    }
+                }
+            }
+        }
+        let face_speed = |x: f64, back: bool| {
+            let (n, s) = (bin(x) - 1..=bin(x) + 1).filter_map(|k| bins.get(&(back, k))).fold((0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+            if n == 0 { 0.0 } else { s / n as f64 }
+        };
+        let (mut scab, mut spall) = ((0u64, 0.0), (0u64, 0.0));
+        for f in frags.iter().filter(|f| !f.supported) {
+            let (vy, x) = (f.velocity_mps()[1], f.centre_m()[0]);
+            if f.back && vy < face_speed(x, true) - sep {
+                scab = (scab.0 + 1, scab.1 + f.mass_kg);
+            } else if f.front && vy > face_speed(x, false) + sep {
+                spall = (spall.0 + 1, spall.1 + f.mass_kg);
+            }
+        }
+        let attached_bonds = m
+            .state
+            .contacts
+            .list
+            .iter()
+            .filter(|c| c.bond == Bond::Intact && self.target.contains(&(c.i as usize)) && attached(c.i as usize))
+            .count() as u64;
+        // Wholly past the back face: below it and below any attached material under it.
+        let mut local = lay.back_y_m;
+        for e in self.target.clone() {
+            let p = st.pos[e];
+            if p[0] + el.radius[e] > xmin && p[0] - el.radius[e] < xmax && attached(e) {
+                local = local.min(p[1] - el.radius[e]);
+            }
+        }
+        Look {
+            time_s: m.time_s(),
+            depth_m: lay.front_y_m - lowest,
+            deflection_m: deflection,
+            scab,
+            spall,
+            through: rear < local,
+            clear: rear < local - 2.0 * 2.0 * lay.concrete_radius_m,
+            v_axial_mps: v[0] * lay.axis[0] + v[1] * lay.axis[1],
+            speed_mps: v[0].hypot(v[1]),
+            attached_bonds,
+        }
+    }
+
+    /// The outcome, from the record and a last look at the model.
+    pub fn outcome(&self, m: &Model) -> Outcome {
+        let l = self.look(m);
+        let t = &self.tracking;
+        Outcome {
+            depth_in: t.depth_m.max(l.depth_m) / M_PER_IN,
+            depth_rel_in: t.depth_rel_m.max(l.depth_m - l.deflection_m) / M_PER_IN,
+            depth_time_s: if l.depth_m > t.depth_m { l.time_s } else { t.depth_time_s },
+            scabbed: t.scab_time_s.is_some() || l.scab.0 > 0,
+            scab_mass_lb: kg_to_lb(l.scab.1),
+            scab_fragments: l.scab.0,
+            scab_time_s: t.scab_time_s.or((l.scab.0 > 0).then_some(l.time_s)),
+            perforated: t.perforation_time_s.is_some() || l.through,
+            v_residual_fps: mps_to_fps(if t.perforation_time_s.is_some() { t.v_residual_mps } else if l.through { l.speed_mps } else { 0.0 }),
+            perforation_time_s: t.perforation_time_s.or(l.through.then_some(l.time_s)),
+            v_final_fps: mps_to_fps(l.speed_mps),
+            spall_mass_lb: kg_to_lb(l.spall.1),
+            spall_fragments: l.spall.0,
+            spall_time_s: t.spall_time_s.or((l.spall.0 > 0).then_some(l.time_s)),
+        }
+    }
+}
+
+impl StopRule for Detector {
+    fn every_steps(&self) -> u64 {
+        self.spec.check_every_steps
+    }
+
+    fn check(&mut self, model: &Model) -> Option<String> {
+        let l = self.look(model);
+        let v0 = self.layout.v0_mps;
+        self.tracking.observe(&l, &self.spec, v0).map(str::to_string)
+    }
+
+    fn save(&self) -> Vec<u8> {
+        postcard::to_stdvec(&self.tracking).expect("the tracking serialises")
+    }
+
+    fn load(&mut self, bytes: &[u8]) -> Result<()> {
+        self.tracking = postcard::from_bytes(bytes).map_err(|e| Error::input("checkpoint", format!("outcome record: {e}")))?;
+        Ok(())
+    }
+}

@@ -1,0 +1,85 @@
+//! A penetration run: the scene of `cases::penetration`, run until its outcome is settled
+//! (`outcome::Detector` as the stop rule), reported as one typed row.
+
+use serde::Serialize;
+
+use crate::cases::penetration::PenetrationScene;
+use crate::error::Result;
+use crate::kernel::{Model, Threading};
+use crate::outcome::{Detector, Outcome};
+use crate::run::{self, RunSummary};
+use crate::units::M_PER_IN;
+
+/// The summary row of a penetration run (`summary.csv`; what sweeps tabulate): the inputs a
+/// sweep varies, the outcome, then the run's own summary.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Row {
+    /// Impact speed, ft/s.
+    pub v0_fps: f64,
+    /// Obliquity, degrees.
+    pub angle_deg: f64,
+    /// Refinement level.
+    pub level: u32,
+    /// The calibration factor.
+    pub strength_factor: f64,
+    /// The slice thickness of the mapping, in.
+    pub thickness_in: f64,
+    /// The outcome.
+    pub outcome: Outcome,
+    /// The run.
+    pub run: RunSummary,
+}
+
+/// A finished penetration run.
+#[derive(Debug, Clone)]
+pub struct Finished {
+    /// Its row.
+    pub row: Row,
+    /// The model at the end.
+    pub model: Model,
+    /// The detector with its record.
+    pub detector: Detector,
+}
+
+/// Hooks a caller may give a run.
+#[derive(Default)]
+pub struct Hooks<'a> {
+    /// Where the steps run.
+    pub threading: Threading,
+    /// Called at every record with the model (pictures).
+    pub each_record: Option<run::Observer<'a>>,
+    /// Simulated time between records, s (0: only the start and the end).
+    pub record_every_s: f64,
+    /// Progress, the fraction of the time cap done.
+    pub tick: Option<&'a mut dyn FnMut(f64)>,
+}
+
+/// Run the scene to its settled outcome.
+pub fn run(scene: &PenetrationScene, hooks: Hooks<'_>) -> Result<Finished> {
+    let (kernel, layout) = scene.to_scene()?;
+    let mut built = kernel.build()?;
+    built.every_steps = if hooks.record_every_s > 0.0 { ((hooks.record_every_s / built.model.dt_s()).round() as u64).max(1) } else { u64::MAX };
+    let mut detector = Detector::new(&built.model, layout.clone(), scene.outcome.clone())?;
+    let (mut on, mut tick) = (hooks.each_record, hooks.tick);
+    if let Some(f) = on.as_mut() {
+        f(&built.model)?;
+    }
+    let result = {
+        // Reborrowed for the run (the callbacks' trait objects shortened to the run's borrow).
+        let observe = on.as_mut().map(|f| &mut **f as run::Observer<'_>);
+        let tick = tick.as_mut().map(|f| &mut **f as &mut dyn FnMut(f64));
+        let options = run::Options { threading: hooks.threading, stop: Some(&mut detector), tick, observe, ..Default::default() };
+        run::run_with(built, options)?
+    };
+    let outcome = detector.outcome(&result.model);
+    let row = Row {
+        v0_fps: scene.projectile.v0_fps,
+        angle_deg: scene.projectile.angle_deg,
+        level: scene.penetration.level,
+        strength_factor: scene.concrete.strength_factor,
+        thickness_in: layout.thickness_m / M_PER_IN,
+        outcome,
+        run: result.summary,
+    };
+    Ok(Finished { row, model: result.model, detector })
+}

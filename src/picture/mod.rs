@@ -1,0 +1,139 @@
+//! Pictures of a run: PNG frames of the beam like the source's Figures 7.2, 7.4 and 7.6, and a
+//! VTK series for ParaView (`frame_NNNNN.vtu` with a `series.pvd` index).
+//!
+//! What a frame shows, per target element: its **damage**, the fraction of the bonds it started
+//! with that have broken (0 grey, through yellow, to 1 dark red); each **broken bond** as a short
+//! black crack across the bond at the contact point; the supports darker; the projectile steel
+//! blue. The view is fixed by the scene (so frames line up), with a 12 in scale bar.
+//!
+//! Every file is written whole (temporary file and rename), the index after each frame, so an
+//! interrupted run leaves a readable series of the frames it reached.
+
+pub mod font;
+mod frame;
+mod vtk;
+
+use std::path::{Path, PathBuf};
+
+use crate::cases::penetration::PenetrationScene;
+use crate::error::{Error, Result};
+use crate::kernel::Model;
+use crate::kernel::contacts::Bond;
+use crate::table::write_atomic;
+
+pub use frame::{View, render_png};
+
+/// What the frames share: the bonds each element started with, and the view.
+#[derive(Debug, Clone)]
+pub struct Damage {
+    /// Initially bonded pairs (i < j).
+    pub initial_bonds: Vec<(u32, u32)>,
+    /// Per element, the bonds it started with.
+    pub initial_count: Vec<u32>,
+}
+
+impl Damage {
+    /// From the model at t = 0.
+    pub fn new(m: &Model) -> Damage {
+        let initial_bonds: Vec<(u32, u32)> = m.state.contacts.list.iter().filter(|c| c.bond == Bond::Intact).map(|c| (c.i, c.j)).collect();
+        let mut initial_count = vec![0u32; m.el.len()];
+        for &(i, j) in &initial_bonds {
+            initial_count[i as usize] += 1;
+            initial_count[j as usize] += 1;
+        }
+        Damage { initial_bonds, initial_count }
+    }
+
+    /// Per element, the fraction of its initial bonds that are broken; and the broken pairs.
+    pub fn now(&self, m: &Model) -> (Vec<f64>, Vec<(u32, u32)>) {
+        let mut intact = vec![0u32; m.el.len()];
+        let mut alive = std::collections::HashSet::with_capacity(self.initial_bonds.len());
+        for c in m.state.contacts.list.iter().filter(|c| c.bond == Bond::Intact) {
+            intact[c.i as usize] += 1;
+            intact[c.j as usize] += 1;
+            alive.insert((c.i, c.j));
+        }
+        let damage = self
+            .initial_count
+            .iter()
+            .zip(&intact)
+            .map(|(&n0, &n)| if n0 == 0 { 0.0 } else { 1.0 - n as f64 / n0 as f64 })
+            .collect();
+        let broken = self.initial_bonds.iter().copied().filter(|p| !alive.contains(p)).collect();
+        (damage, broken)
+    }
+}
+
+/// A series of pictures being written into one folder.
+pub struct Series {
+    dir: PathBuf,
+    view: View,
+    projectile: std::ops::Range<usize>,
+    damage: Option<Damage>,
+    frames: Vec<(f64, String)>,
+    last_step: Option<u64>,
+}
+
+impl Series {
+    /// A series for `scene` in `dir` (created; frames of an earlier series there are replaced).
+    pub fn new(dir: &Path, scene: &PenetrationScene) -> Result<Series> {
+        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+        Ok(Series { dir: dir.to_path_buf(), view: View::of(scene)?, projectile: 0..0, damage: None, frames: Vec::new(), last_step: None })
+    }
+
+    /// Frames written so far: (time s, PNG file name).
+    pub fn frames(&self) -> &[(f64, String)] {
+        &self.frames
+    }
+
+    /// Draw the model (the first call must be at t = 0: it records the initial bonds).
+    pub fn frame(&mut self, m: &Model) -> Result<()> {
+        if self.last_step == Some(m.steps()) {
+            return Ok(());
+        }
+        if self.damage.is_none() {
+            self.damage = Some(Damage::new(m));
+            self.projectile = m.body("projectile").map(|b| b.elements.clone()).unwrap_or(0..0);
+        }
+        let damage = self.damage.as_ref().expect("set above");
+        let (d, broken) = damage.now(m);
+        let k = self.frames.len();
+        let png = format!("frame_{k:05}.png");
+        let vtu = format!("frame_{k:05}.vtu");
+        let bytes = render_png(&self.view, m, &d, &broken, self.projectile.clone()).map_err(|e| Error::io(self.dir.join(&png), e))?;
+        write_atomic(&self.dir.join(&png), &bytes)?;
+        write_atomic(&self.dir.join(&vtu), &vtk::unstructured(m, &d, self.projectile.clone())?)?;
+        self.frames.push((m.time_s(), png));
+        self.last_step = Some(m.steps());
+        write_atomic(&self.dir.join("series.pvd"), vtk::collection(&self.frames).as_bytes())
+    }
+
+    /// The last frame (if the run's end was not drawn yet), and `final.png`, a copy of it.
+    pub fn finish(&mut self, m: &Model) -> Result<PathBuf> {
+        self.frame(m)?;
+        let last = self.dir.join(&self.frames.last().expect("one frame at least").1);
+        let bytes = std::fs::read(&last).map_err(|e| Error::io(&last, e))?;
+        let out = self.dir.join("final.png");
+        write_atomic(&out, &bytes)?;
+        Ok(out)
+    }
+}
+
+/// An RGB buffer (8 bit, row-major) as PNG bytes.
+pub fn png_bytes(rgb: &[u8], w: u32, h: u32) -> std::result::Result<Vec<u8>, String> {
+    let mut out = Vec::new();
+    {
+        let mut enc = png::Encoder::new(&mut out, w, h);
+        enc.set_color(png::ColorType::Rgb);
+        enc.set_depth(png::BitDepth::Eight);
+        let mut writer = enc.write_header().map_err(|e| e.to_string())?;
+        writer.write_image_data(rgb).map_err(|e| e.to_string())?;
+    }
+    Ok(out)
+}
+
+/// Write an RGB buffer to `path` as a PNG, whole (atomically).
+pub fn encode_png(path: &Path, rgb: &[u8], w: u32, h: u32) -> Result<()> {
+    let bytes = png_bytes(rgb, w, h).map_err(|e| crate::error::Error::io(path, std::io::Error::other(e)))?;
+    crate::table::write_atomic(path, &bytes)
+}

@@ -1,0 +1,100 @@
+//! Running a set of jobs: each run one rayon task on one thread (the kernel in
+//! `Threading::Serial`, so a sweep of N runs on N threads never oversubscribes), every finished
+//! run sent over a crossbeam channel to one writer, which adds it to the [`Store`] and rewrites
+//! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
+//! others go on.
+
+use super::job::{Base, Job, run_job};
+use super::progress::Progress;
+use super::store::Store;
+use crate::error::{Error, Result};
+
+/// The sweep engine: a thread pool and the scene.
+pub struct Engine<'a> {
+    /// The scene.
+    pub base: &'a Base,
+    /// Threads (0: rayon's default, one per core).
+    pub threads: usize,
+    /// No progress display.
+    pub quiet: bool,
+}
+
+/// What a call to [`Engine::run`] did.
+#[derive(Debug, Clone, Default)]
+pub struct Finished {
+    /// Runs made now.
+    pub ran: usize,
+    /// Runs found done and skipped.
+    pub skipped: usize,
+    /// Runs that failed: (run id, message).
+    pub failed: Vec<(String, String)>,
+}
+
+impl Engine<'_> {
+    fn pool(&self) -> Result<rayon::ThreadPool> {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(self.threads)
+            .thread_name(|k| format!("demsweep-run-{k}"))
+            .build()
+            .map_err(|e| Error::input("--threads", e.to_string()))
+    }
+
+    /// Run every job of `jobs` that `store` does not hold yet; `store` is kept on disk as they
+    /// finish. Checks every job's overrides before the first run starts.
+    pub fn run(&self, jobs: &[Job], store: &mut Store) -> Result<Finished> {
+        for j in jobs {
+            j.check(self.base)?;
+        }
+        let mut seen = std::collections::HashSet::new();
+        let todo: Vec<&Job> = jobs.iter().filter(|j| !store.has(j) && seen.insert(j.id())).collect();
+        let skipped = jobs.iter().filter(|j| store.has(j)).count();
+        let mut progress = Progress::new(todo.len() + skipped, skipped, self.quiet);
+        let level = self.base.level();
+        let pool = self.pool()?;
+        let mut failed = Vec::new();
+        let written: Result<()> = std::thread::scope(|s| {
+            let (tx, rx) = crossbeam_channel::unbounded::<(&Job, Result<Vec<(String, String)>>)>();
+            let writer = s.spawn(|| -> Result<()> {
+                let mut first_error = None;
+                for (job, result) in rx {
+                    match result {
+                        Ok(row) => {
+                            progress.finished(&job.id(), Ok(&row));
+                            let saved = store.insert(job, &level, &row).and_then(|_| store.write());
+                            if let Err(e) = saved {
+                                first_error.get_or_insert(e);
+                            }
+                        }
+                        Err(e) => {
+                            progress.finished(&job.id(), Err(e.to_string()));
+                            failed.push((job.id(), e.to_string()));
+                        }
+                    }
+                }
+                progress.finish();
+                first_error.map_or(Ok(()), Err)
+            });
+            pool.install(|| {
+                use rayon::prelude::*;
+                todo.par_iter().for_each_with(tx, |tx, job| {
+                    let r = run_job(self.base, job);
+                    let _ = tx.send((job, r));
+                });
+            });
+            writer.join().expect("the writer thread does not panic")
+        });
+        written?;
+        Ok(Finished { ran: todo.len() - failed.len(), skipped, failed })
+    }
+}
+
+impl Finished {
+    /// An error if any run failed, naming each.
+    pub fn check(&self) -> Result<()> {
+        if self.failed.is_empty() {
+            return Ok(());
+        }
+        let list: Vec<String> = self.failed.iter().map(|(id, e)| format!("  {id}: {e}")).collect();
+        Err(Error::input("sweep", format!("{} run(s) failed (the others are in the table; a rerun retries these):\n{}", self.failed.len(), list.join("\n"))))
+    }
+}

@@ -1,0 +1,216 @@
+//! The runs table of a sweep folder (`runs.csv`, and `runs.parquet` beside it): the finished
+//! runs of one scene, one row each, in a fixed order (by the runs' inputs), rewritten whole and
+//! atomically after every finished run, so that a sweep killed at any moment loses at most the
+//! runs in flight, and a rerun skips what is there.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use super::job::{Base, Job};
+use crate::error::{Error, Result};
+use crate::table::Table;
+
+/// The columns every row starts with, ahead of the run's own summary row.
+pub const KEY_COLUMNS: [&str; 4] = ["run_id", "purpose", "scene_hash", "level"];
+
+/// The order of rows: each input value of the run id, numerically where it is a number.
+fn order_key(run_id: &str) -> Vec<(f64, String)> {
+    run_id
+        .split(';')
+        .map(|kv| {
+            let v = kv.split_once('=').map_or(kv, |p| p.1);
+            (v.parse::<f64>().unwrap_or(f64::NAN), v.to_string())
+        })
+        .collect()
+}
+
+fn compare(a: &str, b: &str) -> std::cmp::Ordering {
+    let (ka, kb) = (order_key(a), order_key(b));
+    for (x, y) in ka.iter().zip(&kb) {
+        let o = match (x.0.is_nan(), y.0.is_nan()) {
+            (false, false) => x.0.total_cmp(&y.0),
+            _ => x.1.cmp(&y.1),
+        };
+        if o.is_ne() {
+            return o;
+        }
+    }
+    ka.len().cmp(&kb.len()).then_with(|| a.cmp(b))
+}
+
+/// The finished runs of a sweep folder.
+#[derive(Debug, Clone)]
+pub struct Store {
+    /// The folder.
+    pub dir: PathBuf,
+    /// The scene hash every row must carry.
+    pub hash: String,
+    /// Column names (the key columns, then the summary row's).
+    pub header: Vec<String>,
+    /// Rows by run id.
+    rows: BTreeMap<String, Vec<String>>,
+    /// Write `runs.parquet` with every update (off for a shard's quick rewrites is never needed:
+    /// a sweep's table is small).
+    pub parquet: bool,
+}
+
+impl Store {
+    /// `DIR/runs.csv`.
+    pub fn csv_path(dir: &Path) -> PathBuf {
+        dir.join("runs.csv")
+    }
+
+    /// Open the runs of `dir` for `base`: the rows already there are kept and their runs
+    /// skipped. Rows of another scene are never mixed in: that is an error that says how to
+    /// start afresh, unless `fresh`, which removes the folder's old tables first.
+    pub fn open(dir: &Path, base: &Base, fresh: bool) -> Result<Store> {
+        Self::open_hash(dir, &base.hash, &base.path, fresh)
+    }
+
+    fn open_hash(dir: &Path, hash: &str, scene: &Path, fresh: bool) -> Result<Store> {
+        let path = Self::csv_path(dir);
+        if fresh {
+            for name in ["runs.csv", "runs.parquet", "thresholds.csv"] {
+                let p = dir.join(name);
+                if p.exists() {
+                    std::fs::remove_file(&p).map_err(|e| Error::io(&p, e))?;
+                }
+            }
+        }
+        let mut store = Store { dir: dir.to_path_buf(), hash: hash.to_string(), header: Vec::new(), rows: BTreeMap::new(), parquet: true };
+        if path.exists() {
+            let t = Table::read_csv(&path)?;
+            let (Some(id), Some(h)) = (t.column("run_id"), t.column("scene_hash")) else {
+                return Err(Error::input(path.display().to_string(), "not a runs table of demsweep (no run_id or scene_hash column)"));
+            };
+            for row in &t.rows {
+                if row[h] != hash {
+                    return Err(Error::input(
+                        path.display().to_string(),
+                        format!(
+                            "holds runs of another scene (scene_hash {}; {} is {}): rerun with --fresh to start afresh, or give another --out",
+                            row[h],
+                            scene.display(),
+                            hash
+                        ),
+                    ));
+                }
+                store.rows.insert(row[id].clone(), row.clone());
+            }
+            store.header = t.header;
+        }
+        Ok(store)
+    }
+
+    /// Read the runs of a sweep folder as they are (a shard, for `merge`); the scene hash is
+    /// the rows' (all rows must share it).
+    pub fn read(dir: &Path) -> Result<Store> {
+        let path = Self::csv_path(dir);
+        if !path.exists() {
+            return Err(Error::input(dir.display().to_string(), "holds no runs.csv: not a sweep folder (or the shard has not run)"));
+        }
+        let t = Table::read_csv(&path)?;
+        let h = t.column("scene_hash").ok_or_else(|| Error::input(path.display().to_string(), "not a runs table of demsweep (no scene_hash column)"))?;
+        let hash = t.rows.first().map(|r| r[h].clone()).unwrap_or_default();
+        Store::open_hash(dir, &hash, &path, false)
+    }
+
+    /// Whether `job` has finished.
+    pub fn has(&self, job: &Job) -> bool {
+        self.rows.contains_key(&job.id())
+    }
+
+    /// The row of `job`, as (column, text).
+    pub fn row(&self, job: &Job) -> Option<Vec<(&str, &str)>> {
+        let r = self.rows.get(&job.id())?;
+        Some(self.header.iter().map(String::as_str).zip(r.iter().map(String::as_str)).collect())
+    }
+
+    /// The cell of column `name` of `job`'s row.
+    pub fn get(&self, job: &Job, name: &str) -> Option<&str> {
+        let k = self.header.iter().position(|h| h == name)?;
+        Some(self.rows.get(&job.id())?[k].as_str())
+    }
+
+    /// Number of rows.
+    pub fn len(&self) -> usize {
+        self.rows.len()
+    }
+
+    /// No rows yet.
+    pub fn is_empty(&self) -> bool {
+        self.rows.is_empty()
+    }
+
+    /// Add a finished run's summary row (the key columns are put in front).
+    pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
+        let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
+        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), level.to_string()];
+        let row_level = row.iter().find(|c| c.0 == "level").map(|c| c.1.clone());
+        if let Some(l) = row_level {
+            cells[3] = l;
+        }
+        for (k, v) in row.iter().filter(|c| c.0 != "level") {
+            header.push(k.clone());
+            cells.push(v.clone());
+        }
+        if self.header.is_empty() {
+            self.header = header;
+        } else if self.header != header {
+            return Err(Error::input(Self::csv_path(&self.dir).display().to_string(), "a run's row has other columns than the table's"));
+        }
+        self.rows.insert(job.id(), cells);
+        Ok(())
+    }
+
+    /// The table, rows ordered by their inputs.
+    pub fn table(&self) -> Table {
+        let mut ids: Vec<&String> = self.rows.keys().collect();
+        ids.sort_by(|a, b| compare(a, b));
+        Table { header: self.header.clone(), rows: ids.into_iter().map(|id| self.rows[id].clone()).collect() }
+    }
+
+    /// Write `runs.csv` (and `runs.parquet`) atomically.
+    pub fn write(&self) -> Result<()> {
+        let t = self.table();
+        t.write_csv(&Self::csv_path(&self.dir))?;
+        if self.parquet {
+            super::parquet::write(&t, &self.dir.join("runs.parquet"))?;
+        }
+        Ok(())
+    }
+
+    /// Merge the rows of another store of the same scene (shards).
+    pub fn absorb(&mut self, other: Store) -> Result<()> {
+        if other.hash != self.hash {
+            return Err(Error::input(
+                other.dir.display().to_string(),
+                format!("is a sweep of another scene (scene_hash {}, not {}): shards of different scenes cannot be merged", other.hash, self.hash),
+            ));
+        }
+        if !other.header.is_empty() {
+            if self.header.is_empty() {
+                self.header = other.header.clone();
+            } else if self.header != other.header {
+                return Err(Error::input(other.dir.display().to_string(), "its runs table has other columns"));
+            }
+        }
+        self.rows.extend(other.rows);
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_are_ordered_by_their_inputs_numerically() {
+        let mut ids = vec!["v=1000", "v=550", "v=612.5", "v=50"];
+        ids.sort_by(|a, b| compare(a, b));
+        assert_eq!(ids, vec!["v=50", "v=550", "v=612.5", "v=1000"]);
+        let mut ids = vec!["a=2;b=1", "a=10;b=0", "a=2;b=0"];
+        ids.sort_by(|a, b| compare(a, b));
+        assert_eq!(ids, vec!["a=2;b=0", "a=2;b=1", "a=10;b=0"]);
+    }
+}

@@ -1,0 +1,270 @@
+//! The outcome definitions of `demsweep::outcome` on hand-built states: a model of a small beam
+//! and projectile is built, then moved and cut by hand into the situation each definition is
+//! about, and the detector's reading is compared with what the definition says it must be.
+
+use demsweep::cases::penetration::{Layout, OutcomeSpec, PenetrationScene};
+use demsweep::kernel::Model;
+use demsweep::kernel::contacts::Bond;
+use demsweep::outcome::{Detector, Look, Tracking};
+use demsweep::units::M_PER_IN;
+
+/// A 24 in × 6 in beam at level 0 (R = 0.5 in), the seed's projectile 1 in above it.
+fn small() -> (Model, Detector, Layout) {
+    let mut s = PenetrationScene::with_name("outcomes");
+    s.penetration.level = 0;
+    s.target.length_in = 24.0;
+    s.target.depth_in = 6.0;
+    s.projectile.standoff_in = 1.0;
+    let (scene, layout) = s.to_scene().unwrap();
+    let built = scene.build().unwrap();
+    let det = Detector::new(&built.model, layout.clone(), s.outcome.clone()).unwrap();
+    (built.model, det, layout)
+}
+
+fn range(m: &Model, name: &str) -> std::ops::Range<usize> {
+    m.body(name).unwrap().elements.clone()
+}
+
+/// Break every bond with exactly one end in `inside`.
+fn cut(m: &mut Model, inside: &dyn Fn(usize) -> bool) -> usize {
+    let mut n = 0;
+    for c in m.state.contacts.list.iter_mut() {
+        if c.bond == Bond::Intact && inside(c.i as usize) != inside(c.j as usize) {
+            c.bond = Bond::Frictional;
+            n += 1;
+        }
+    }
+    n
+}
+
+fn shift_projectile(m: &mut Model, dy_m: f64, vy_mps: f64) {
+    for e in range(m, "projectile") {
+        m.state.pos[e][1] += dy_m;
+        m.state.vel[e] = [0.0, vy_mps, 0.0];
+    }
+}
+
+#[test]
+fn at_rest_nothing_has_happened() {
+    let (m, det, lay) = small();
+    let l = det.look(&m);
+    assert!((l.depth_m + 1.0 * M_PER_IN).abs() < 1e-9, "the tip starts 1 in above the face: {}", l.depth_m / M_PER_IN);
+    assert_eq!((l.scab.0, l.spall.0), (0, 0));
+    assert!(!l.through);
+    assert!(l.deflection_m.abs() < 1e-15);
+    // The front face is the top of the top row: within a row spacing (√3 R) below the 6 in.
+    let gap = 6.0 * M_PER_IN - lay.front_y_m;
+    assert!(gap >= 0.0 && gap < 3f64.sqrt() * 0.5 * M_PER_IN, "front face {} in", lay.front_y_m / M_PER_IN);
+}
+
+#[test]
+fn a_fragment_flying_off_the_back_is_a_scab_with_its_mass() {
+    let (mut m, det, lay) = small();
+    let target = range(&m, "target");
+    // A lump of back-face material under the impact point, 2.5 in deep and 6 in wide.
+    let lump = |e: usize| {
+        target.contains(&e) && m.el.initial[e][1] < 2.5 * M_PER_IN && (m.el.initial[e][0] - lay.impact_x_m).abs() < 3.0 * M_PER_IN
+    };
+    let members: Vec<usize> = target.clone().filter(|&e| lump(e)).collect();
+    let mass: f64 = members.iter().map(|&e| m.el.mass[e]).sum();
+    assert!(members.len() > 10);
+    let lump_set: std::collections::HashSet<usize> = members.iter().copied().collect();
+    assert!(cut(&mut m, &|e| lump_set.contains(&e)) > 0);
+    // Detached but still: not (yet) a scab.
+    assert_eq!(det.look(&m).scab.0, 0, "a detached piece at rest is not a scab");
+    // Moving away from the back face at 2 ft/s: below the 3 ft/s separation.
+    for &e in &members {
+        m.state.vel[e][1] = -2.0 * 0.3048;
+    }
+    assert_eq!(det.look(&m).scab.0, 0, "2 ft/s is below the separation speed");
+    for &e in &members {
+        m.state.vel[e][1] = -10.0;
+        m.state.pos[e][1] -= 3.0 * M_PER_IN;
+    }
+    let l = det.look(&m);
+    assert_eq!(l.scab.0, 1, "one scab fragment");
+    assert!((l.scab.1 - mass).abs() <= 1e-12 * mass, "scab mass {} kg, lump {} kg", l.scab.1, mass);
+    assert_eq!(l.spall.0, 0);
+    // Moving back up into the beam is not scabbing.
+    for &e in &members {
+        m.state.vel[e][1] = 10.0;
+    }
+    assert_eq!(det.look(&m).scab.0, 0);
+}
+
+#[test]
+fn single_detached_elements_count_as_fragments_and_front_face_spall_is_apart() {
+    let (mut m, det, lay) = small();
+    let target = range(&m, "target");
+    // Two front-face elements near the impact point, knocked loose and flying up (spall).
+    let front: Vec<usize> = target
+        .clone()
+        .filter(|&e| m.el.initial[e][1] + m.el.radius[e] > lay.front_y_m - 1e-9 && (m.el.initial[e][0] - lay.impact_x_m).abs() < 3.0 * M_PER_IN)
+        .take(2)
+        .collect();
+    assert_eq!(front.len(), 2);
+    let set: std::collections::HashSet<usize> = front.iter().copied().collect();
+    cut(&mut m, &|e| set.contains(&e));
+    // Break the bond between the two too: two single-element fragments.
+    for c in m.state.contacts.list.iter_mut() {
+        if set.contains(&(c.i as usize)) && set.contains(&(c.j as usize)) {
+            c.bond = Bond::Frictional;
+        }
+    }
+    for &e in &front {
+        m.state.vel[e][1] = 20.0;
+    }
+    let l = det.look(&m);
+    assert_eq!(l.spall.0, 2);
+    let mass: f64 = front.iter().map(|&e| m.el.mass[e]).sum();
+    assert!((l.spall.1 - mass).abs() <= 1e-12 * mass);
+    assert_eq!(l.scab.0, 0, "front-face material is never scab");
+}
+
+#[test]
+fn a_projectile_half_way_through_has_its_depth_and_is_not_through() {
+    let (mut m, det, lay) = small();
+    let depth = lay.front_y_m - lay.back_y_m;
+    // Tip from 1 in above the face to half the depth below it.
+    shift_projectile(&mut m, -(1.0 * M_PER_IN + 0.5 * depth), 100.0 * -0.3048);
+    let l = det.look(&m);
+    assert!((l.depth_m - 0.5 * depth).abs() < 1e-9, "depth {} in", l.depth_m / M_PER_IN);
+    assert!(!l.through && !l.clear);
+    assert!(l.v_axial_mps > 0.0, "going in");
+}
+
+#[test]
+fn a_bent_but_intact_beam_has_no_fragments_and_the_relative_depth_takes_off_the_deflection() {
+    let (mut m, det, lay) = small();
+    let target = range(&m, "target");
+    let length = 24.0 * M_PER_IN;
+    let w0 = 0.8 * M_PER_IN;
+    // Bend the free part of the beam (the supports stay) and let it swing down fast.
+    for e in target.clone() {
+        if !m.el.is_fully_prescribed(e) {
+            let x = m.el.initial[e][0];
+            let w = w0 * (std::f64::consts::PI * x / length).sin();
+            m.state.pos[e][1] -= w;
+            m.state.vel[e][1] = -30.0 * w / w0;
+        }
+    }
+    // The projectile's tip 0.5 in into the bent beam.
+    shift_projectile(&mut m, -(1.0 * M_PER_IN + w0 + 0.5 * M_PER_IN), 0.0);
+    let l = det.look(&m);
+    assert_eq!((l.scab.0, l.spall.0), (0, 0), "an intact beam sheds nothing however fast it swings");
+    assert!((l.depth_m - (w0 + 0.5 * M_PER_IN)).abs() < 1e-9);
+    // The deflection is read on the back face within half a width of the impact point.
+    let half = 0.5 * lay.projectile_width_m;
+    let lo = w0 * (std::f64::consts::PI * (0.5 * length + half) / length).sin();
+    assert!(l.deflection_m <= w0 + 1e-12 && l.deflection_m >= lo - 1e-12, "deflection {} in", l.deflection_m / M_PER_IN);
+    let rel = l.depth_m - l.deflection_m;
+    assert!((rel - 0.5 * M_PER_IN).abs() < (w0 - lo) + 1e-12, "relative depth {} in", rel / M_PER_IN);
+}
+
+#[test]
+fn a_projectile_wholly_past_the_back_face_is_through_and_then_clear() {
+    let (mut m, det, lay) = small();
+    let (lo, hi) = range(&m, "projectile").fold((f64::INFINITY, f64::NEG_INFINITY), |a, e| {
+        (a.0.min(m.state.pos[e][1] - m.el.radius[e]), a.1.max(m.state.pos[e][1] + m.el.radius[e]))
+    });
+    let length = hi - lo;
+    // Rear 0.1 in below the back face: through, not yet clear.
+    shift_projectile(&mut m, -(lo - lay.back_y_m) - length - 0.1 * M_PER_IN, -50.0);
+    let l = det.look(&m);
+    assert!(l.through && !l.clear);
+    // Two element diameters further: clear.
+    shift_projectile(&mut m, -2.0 * 2.0 * lay.concrete_radius_m, -50.0);
+    let l = det.look(&m);
+    assert!(l.through && l.clear);
+    assert!((l.speed_mps - 50.0).abs() < 1e-9);
+}
+
+#[test]
+fn a_projectile_in_a_deflected_beam_is_not_through_until_past_the_material_under_it() {
+    let (mut m, det, lay) = small();
+    let target = range(&m, "target");
+    // The beam sags 3 in as a whole (not the supports): the back face under the projectile is
+    // then 3 in below y = 0.
+    for e in target.clone() {
+        if !m.el.is_fully_prescribed(e) {
+            m.state.pos[e][1] -= 3.0 * M_PER_IN;
+        }
+    }
+    let (lo, hi) = range(&m, "projectile").fold((f64::INFINITY, f64::NEG_INFINITY), |a, e| {
+        (a.0.min(m.state.pos[e][1] - m.el.radius[e]), a.1.max(m.state.pos[e][1] + m.el.radius[e]))
+    });
+    shift_projectile(&mut m, -(lo - lay.back_y_m) - (hi - lo) - 0.1 * M_PER_IN, -50.0);
+    assert!(!det.look(&m).through, "past y = 0 but still above attached material");
+}
+
+fn look(t: f64, v: f64, attached_bonds: u64) -> Look {
+    Look {
+        time_s: t,
+        depth_m: 0.1,
+        deflection_m: 0.0,
+        scab: (0, 0.0),
+        spall: (0, 0.0),
+        through: false,
+        clear: false,
+        v_axial_mps: v,
+        speed_mps: v.abs(),
+        attached_bonds,
+    }
+}
+
+#[test]
+fn a_rebounding_projectile_settles_once_the_target_is_quiet() {
+    let spec = OutcomeSpec::default();
+    let mut t = Tracking::default();
+    assert_eq!(t.observe(&look(1e-4, 100.0, 10), &spec, 150.0), None, "going in");
+    assert_eq!(t.observe(&look(5e-4, -5.0, 20), &spec, 150.0), None, "turned, but bonds broke just now");
+    assert_eq!(t.observe(&look(5e-4 + 0.99 * spec.quiet_s, -5.0, 20), &spec, 150.0), None);
+    assert_eq!(t.observe(&look(5e-4 + 1.01 * spec.quiet_s, -5.0, 20), &spec, 150.0), Some("rebounded"));
+}
+
+#[test]
+fn regression_a_slow_late_fracture_is_not_cut_off() {
+    // The projectile stops early; cracks keep running slowly, one bond every 0.8 quiet periods
+    // for 10 periods. The run must not settle until the last of them is a quiet period old.
+    let spec = OutcomeSpec::default();
+    let mut t = Tracking::default();
+    let q = spec.quiet_s;
+    let mut bonds = 100;
+    let mut time = 0.0;
+    let mut settled = None;
+    while settled.is_none() && time < 20.0 * q {
+        time += 0.05 * q;
+        if time < 10.0 * q && ((time / (0.8 * q)).fract() < 0.05 / 0.8) {
+            bonds -= 1;
+        }
+        settled = t.observe(&look(time, 0.0, bonds), &spec, 150.0).map(|s| (s, time));
+    }
+    let (why, when) = settled.expect("settles eventually");
+    assert_eq!(why, "embedded");
+    assert!(when >= t.last_break_s + q && t.last_break_s > 9.0 * q, "settled at {when} s, last break {} s", t.last_break_s);
+}
+
+#[test]
+fn perforation_records_the_residual_speed_when_first_through_and_settles_when_clear() {
+    let spec = OutcomeSpec::default();
+    let mut t = Tracking::default();
+    let mut l = look(1e-3, 80.0, 500);
+    l.through = true;
+    assert_eq!(t.observe(&l, &spec, 150.0), None);
+    assert_eq!(t.perforation_time_s, Some(1e-3));
+    assert_eq!(t.v_residual_mps, 80.0);
+    let mut later = look(1e-3 + 2.0 * spec.quiet_s, 70.0, 500);
+    later.through = true;
+    assert_eq!(t.observe(&later, &spec, 150.0), None, "through but not clear yet");
+    later.clear = true;
+    assert_eq!(t.observe(&later, &spec, 150.0), None, "clear just now");
+    // Debris keeps breaking bonds in the attached target: perforation settles anyway, a quiet
+    // period after the exit.
+    later.time_s += 0.99 * spec.quiet_s;
+    later.attached_bonds -= 1;
+    assert_eq!(t.observe(&later, &spec, 150.0), None);
+    later.time_s += 0.02 * spec.quiet_s;
+    later.attached_bonds -= 1;
+    assert_eq!(t.observe(&later, &spec, 150.0), Some("perforated"));
+    assert_eq!(t.v_residual_mps, 80.0, "the residual speed is the one at first exit");
+}

@@ -1,0 +1,230 @@
+//! The sweep engine from the command line, on a small fast scene (`tests/data/tiny_beam.toml`):
+//! the same tables for any thread count, after a kill -9 and a rerun, and from shards merged;
+//! a changed scene never mixed with old rows; bad input refused with a clear message and no
+//! table written; the Parquet file the same table as the CSV.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use demsweep::table::Table;
+
+const BIN: &str = env!("CARGO_BIN_EXE_demsweep");
+/// Columns that measure the machine, not the run.
+const TIMING: [&str; 2] = ["wall_s", "element_steps_per_s"];
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn tmp(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("demsweep-sweep-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+fn demsweep(args: &[&str]) -> Output {
+    Command::new(BIN).current_dir(root()).args(args).output().expect("the binary runs")
+}
+
+fn ok(args: &[&str]) -> Output {
+    let o = demsweep(args);
+    assert!(o.status.success(), "{args:?}: {}", String::from_utf8_lossy(&o.stderr));
+    o
+}
+
+/// A table without its timing columns.
+fn untimed(path: &Path) -> Table {
+    let mut t = Table::read_csv(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let keep: Vec<usize> = (0..t.header.len()).filter(|&k| !TIMING.contains(&t.header[k].as_str())).collect();
+    t.header = keep.iter().map(|&k| t.header[k].clone()).collect();
+    t.rows = t.rows.iter().map(|r| keep.iter().map(|&k| r[k].clone()).collect()).collect();
+    t
+}
+
+fn ballistic(out: &Path, threads: &str, extra: &[&str]) -> Output {
+    let mut args = vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--v0", "300..900", "--step", "100", "--tol-fps", "5", "--quiet", "--threads", threads, "--out"];
+    let out = out.to_str().unwrap().to_string();
+    args.push(&out);
+    args.extend_from_slice(extra);
+    ok(&args)
+}
+
+fn same_tables(a: &Path, b: &Path) {
+    assert_eq!(untimed(&a.join("runs.csv")), untimed(&b.join("runs.csv")), "runs of {} and {}", a.display(), b.display());
+    assert_eq!(
+        std::fs::read_to_string(a.join("thresholds.csv")).unwrap(),
+        std::fs::read_to_string(b.join("thresholds.csv")).unwrap(),
+        "thresholds of {} and {}",
+        a.display(),
+        b.display()
+    );
+}
+
+#[test]
+fn the_tables_are_the_same_on_one_thread_and_on_two() {
+    let (one, two) = (tmp("one"), tmp("two"));
+    ballistic(&one, "1", &[]);
+    ballistic(&two, "2", &[]);
+    same_tables(&one, &two);
+    // Both thresholds were bisected to the tolerance, scabbing not above perforation.
+    let t = Table::read_csv(&one.join("thresholds.csv")).unwrap();
+    let f = |r: usize, c: &str| -> f64 { t.get(r, c).unwrap().parse().unwrap() };
+    for r in 0..2 {
+        assert_eq!(t.get(r, "method"), Some("bisection"));
+        assert!(f(r, "v_high_fps") - f(r, "v_low_fps") <= 5.0 && f(r, "v_low_fps") < f(r, "v_est_fps"));
+    }
+    assert!(f(0, "v_est_fps") <= f(1, "v_est_fps"));
+    for d in [one, two] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn a_sweep_killed_with_sigkill_and_rerun_ends_with_the_tables_of_one_that_never_stopped() {
+    let (whole, killed) = (tmp("whole"), tmp("killed"));
+    ballistic(&whole, "1", &[]);
+    let mut child = Command::new(BIN)
+        .current_dir(root())
+        .args(["ballistic", "--scene", "tests/data/tiny_beam.toml", "--v0", "300..900", "--step", "100", "--tol-fps", "5", "--quiet", "--threads", "1", "--out"])
+        .arg(&killed)
+        .spawn()
+        .unwrap();
+    // Kill it as soon as some but not all runs are on disk.
+    let runs = killed.join("runs.csv");
+    let t0 = std::time::Instant::now();
+    loop {
+        let n = std::fs::read_to_string(&runs).map(|s| s.lines().count()).unwrap_or(0);
+        if n >= 3 || t0.elapsed().as_secs() > 60 {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    child.kill().unwrap(); // SIGKILL
+    child.wait().unwrap();
+    let before = Table::read_csv(&runs).expect("the table on disk is whole after a kill");
+    assert!(!before.rows.is_empty() && before.rows.len() < 15, "killed mid-sweep: {} rows", before.rows.len());
+    let rerun = ballistic(&killed, "1", &[]);
+    assert!(String::from_utf8_lossy(&rerun.stdout).contains("found done"));
+    same_tables(&whole, &killed);
+    for d in [whole, killed] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn two_shards_merged_give_the_tables_of_the_unsharded_sweep() {
+    let (whole, s1, s2, merged) = (tmp("unsharded"), tmp("shard1"), tmp("shard2"), tmp("merged"));
+    ballistic(&whole, "2", &[]);
+    ballistic(&s1, "1", &["--shard", "1/2"]);
+    ballistic(&s2, "1", &["--shard", "2/2"]);
+    let (n1, n2) = (Table::read_csv(&s1.join("runs.csv")).unwrap().rows.len(), Table::read_csv(&s2.join("runs.csv")).unwrap().rows.len());
+    assert_eq!((n1, n2), (4, 3), "7 grid velocities dealt out alternately, no bisection in a shard");
+    ok(&["merge", s1.to_str().unwrap(), s2.to_str().unwrap(), "--out", merged.to_str().unwrap(), "--bisect", "--quiet"]);
+    same_tables(&whole, &merged);
+    for d in [whole, s1, s2, merged] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn the_parquet_file_holds_the_csv_table_typed() {
+    let out = tmp("parquet");
+    ok(&["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=300..500:100", "--out", out.to_str().unwrap(), "--quiet"]);
+    let csv = Table::read_csv(&out.join("runs.csv")).unwrap();
+    let df = demsweep::sweep::parquet::read(&out.join("runs.parquet")).unwrap();
+    assert_eq!(df.height(), 3);
+    assert_eq!(df.width(), csv.header.len());
+    let v0 = df.column("v0_fps").unwrap().f64().unwrap().into_no_null_iter().collect::<Vec<_>>();
+    assert_eq!(v0, vec![300.0, 400.0, 500.0]);
+    let steps = df.column("steps").unwrap().i64().unwrap().into_no_null_iter().collect::<Vec<_>>();
+    let csv_steps: Vec<i64> = (0..3).map(|r| csv.get(r, "steps").unwrap().parse().unwrap()).collect();
+    assert_eq!(steps, csv_steps);
+    let perforated_column = df.column("perforated").unwrap().bool().unwrap().clone();
+    let perforated = (0..3).map(|i| perforated_column.get(i).unwrap()).collect::<Vec<_>>();
+    assert_eq!(perforated, (0..3).map(|r| csv.get(r, "perforated") == Some("true")).collect::<Vec<_>>());
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn a_grid_and_a_parameter_table_of_the_same_runs_give_the_same_rows() {
+    let (g, t) = (tmp("grid"), tmp("table"));
+    ok(&["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=300,400", "--vary", "projectile.angle_deg=0..10:10", "--out", g.to_str().unwrap(), "--quiet"]);
+    std::fs::create_dir_all(&t).unwrap();
+    let params = t.join("params.csv");
+    std::fs::write(&params, "projectile.v0_fps,projectile.angle_deg\n400,10.0\n300,0.0\n300,10.0\n400,0.0\n").unwrap();
+    ok(&["sweep", "tests/data/tiny_beam.toml", "--table", params.to_str().unwrap(), "--out", t.to_str().unwrap(), "--quiet"]);
+    let (a, mut b) = (untimed(&g.join("runs.csv")), untimed(&t.join("runs.csv")));
+    let purpose = b.column("purpose").unwrap();
+    for r in &mut b.rows {
+        assert_eq!(r[purpose], "table");
+        r[purpose] = "grid".into();
+    }
+    assert_eq!(a, b);
+    assert_eq!(a.rows.len(), 4);
+    assert_eq!(a.get(1, "run_id"), Some("projectile.v0_fps=300;projectile.angle_deg=10"));
+    for d in [g, t] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
+#[test]
+fn a_changed_scene_is_never_mixed_with_old_rows() {
+    let out = tmp("changed");
+    ok(&["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=300", "--out", out.to_str().unwrap(), "--quiet"]);
+    let changed = out.join("changed.toml");
+    let text = std::fs::read_to_string(root().join("tests/data/tiny_beam.toml")).unwrap().replace("strength_factor = 60.0", "strength_factor = 61.0");
+    std::fs::write(&changed, text).unwrap();
+    let before = std::fs::read(out.join("runs.csv")).unwrap();
+    let o = demsweep(&["sweep", changed.to_str().unwrap(), "--vary", "projectile.v0_fps=300", "--out", out.to_str().unwrap(), "--quiet"]);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && msg.contains("another scene") && msg.contains("--fresh"), "{msg}");
+    assert_eq!(std::fs::read(out.join("runs.csv")).unwrap(), before, "the old table untouched");
+    ok(&["sweep", changed.to_str().unwrap(), "--vary", "projectile.v0_fps=300", "--out", out.to_str().unwrap(), "--quiet", "--fresh"]);
+    let t = Table::read_csv(&out.join("runs.csv")).unwrap();
+    assert_eq!(t.rows.len(), 1);
+    assert_eq!(t.get(0, "strength_factor").unwrap().parse::<f64>().unwrap(), 61.0);
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn bad_input_is_refused_with_a_clear_message_and_no_table() {
+    let out = tmp("bad");
+    let o = out.to_str().unwrap();
+    let other = tmp("bad-other-shard");
+    // A shard of another scene, to merge with a shard of this one.
+    let changed = std::env::temp_dir().join(format!("demsweep-changed-{}.toml", std::process::id()));
+    std::fs::write(&changed, std::fs::read_to_string(root().join("tests/data/tiny_beam.toml")).unwrap().replace("strength_factor = 60.0", "strength_factor = 70.0")).unwrap();
+    let (s_this, s_other) = (tmp("bad-this-shard"), other.clone());
+    ballistic(&s_this, "1", &["--shard", "1/2"]);
+    ok(&["ballistic", "--scene", changed.to_str().unwrap(), "--v0", "300..900", "--step", "100", "--quiet", "--shard", "2/2", "--out", s_other.to_str().unwrap()]);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--v0", "1500..500", "--out", o], "reversed"),
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--step", "0", "--out", o], "--step"),
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--step=-50", "--out", o], "--step"),
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--tol-fps", "0", "--out", o], "--tol-fps"),
+        (vec!["ballistic", "--scene", "tests/data/missing.toml", "--out", o], "missing.toml"),
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--shard", "3/2", "--out", o], "--shard"),
+        (vec!["ballistic", "--scene", "tests/data/tiny_beam.toml", "--shard", "0/2", "--out", o], "--shard"),
+        (vec!["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fpz=300..400:100", "--out", o], "v0_fpz"),
+        (vec!["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=-100..400:100", "--out", o], "v0_fps"),
+        (vec!["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=500..400:100", "--out", o], "reversed"),
+        (vec!["sweep", "tests/data/tiny_beam.toml", "--out", o], "nothing to vary"),
+        (vec!["converge", "--case", "sphere", "--out", o], "sphere"),
+        (vec!["converge", "--mesh", "1", "--out", o], "--mesh"),
+        (vec!["converge", "--case", "cantilever", "--ratio", "2", "--out", o], "refines by 3"),
+        (vec!["merge", s_this.to_str().unwrap(), s_other.to_str().unwrap(), "--out", o], "another scene"),
+    ];
+    for (args, says) in cases {
+        let r = demsweep(&args);
+        let msg = String::from_utf8_lossy(&r.stderr);
+        assert!(!r.status.success(), "{args:?} should fail");
+        assert!(msg.contains(says), "{args:?}: expected `{says}` in: {msg}");
+        let written: Vec<_> = std::fs::read_dir(&out).map(|d| d.filter_map(|e| e.ok()).map(|e| e.file_name()).collect()).unwrap_or_default();
+        assert!(!written.iter().any(|n| n.to_string_lossy().ends_with(".csv") || n.to_string_lossy().ends_with(".parquet")), "{args:?} wrote {written:?}");
+    }
+    for d in [s_this, s_other] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+    let _ = std::fs::remove_dir_all(out);
+    std::fs::remove_file(changed).unwrap();
+}
