@@ -1,7 +1,8 @@
 //! `thresholds.csv`: one row per threshold estimate — ours (bisection; Lambert–Jonas and
 //! Recht–Ipson fits of the ballistic limit) and each empirical formula's for the same missile
 //! and wall (`empirical`, issue [2/5]) — with the empirical band beside every row: the lowest
-//! and highest velocity among the formulas that are inside (or state no) validity at it.
+//! and highest velocity among the formulas that are inside (or state no) validity at it, leaving
+//! out the variants for reinforced concrete (the wall is plain).
 
 use super::bracket::{Bracket, Finding};
 use super::fit::Fit;
@@ -74,9 +75,15 @@ pub fn empirical(s: &PenetrationScene) -> Result<Vec<Empirical>> {
     Ok(out)
 }
 
-/// The band of usable formula velocities for a threshold, ft/s.
+/// Whether a formula's row counts toward the band: usable here, and not a variant for reinforced
+/// concrete (Petry's `normal-rc`, `special-rc`): the scene's wall is plain concrete.
+pub fn in_band(r: &Empirical) -> bool {
+    r.usable && !r.method.contains("-rc)")
+}
+
+/// The band of usable plain-concrete formula velocities for a threshold, ft/s.
 pub fn band(rows: &[Empirical], threshold: &str) -> Option<(f64, f64)> {
-    let v: Vec<f64> = rows.iter().filter(|r| r.threshold == threshold && r.usable).filter_map(|r| r.v_fps).collect();
+    let v: Vec<f64> = rows.iter().filter(|r| r.threshold == threshold && in_band(r)).filter_map(|r| r.v_fps).collect();
     if v.is_empty() {
         return None;
     }

@@ -67,9 +67,11 @@ fn print(r: &Report, out: &std::path::Path) {
     }
     for name in ["scabbing", "perforation"] {
         let f = if name == "scabbing" { &r.scabbing } else { &r.perforation };
-        match f.estimate_fps() {
-            Some(v) => println!("{name:>12}: {v:.1} ft/s {:?} {}", f.bracket, f.note(name)),
-            None => println!("{name:>12}: {}", f.note(name)),
+        match f.bracket {
+            crate::ballistic::bracket::Bracket::Between { lo_fps, hi_fps } => {
+                println!("{name:>12}: {:.1} ft/s (none at {lo_fps}, seen at {hi_fps} ft/s) {}", 0.5 * (lo_fps + hi_fps), f.note(name))
+            }
+            _ => println!("{name:>12}: {}", f.note(name)),
         }
     }
     for (name, fit) in [("Lambert–Jonas", r.lambert_jonas), ("Recht–Ipson", r.recht_ipson)] {

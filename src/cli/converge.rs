@@ -50,8 +50,10 @@ pub fn run(args: Args) -> Result<()> {
     let (levels, summary) = converge::tables(&report);
     print!("{}", String::from_utf8_lossy(&levels.to_csv()?));
     print!("{}", String::from_utf8_lossy(&summary.to_csv()?));
-    if let Class::None(why) = &report.class {
-        println!("no observed order: {why}");
+    match &report.class {
+        Class::None(why) => println!("no observed order: {why}"),
+        Class::OutcomeChanges(why) => println!("no observed order: the levels end in different outcomes ({why})"),
+        _ => {}
     }
     println!("tables in {}", args.out.display());
     Ok(())

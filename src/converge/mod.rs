@@ -9,7 +9,7 @@
 
 pub mod plot;
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 use crate::analysis::{Convergence, NotConvergent, celik, richardson};
 use crate::cases::cracked_plate::{self, Grips, Setup, Study};
@@ -77,6 +77,8 @@ pub struct Level {
     pub wall_s: f64,
     /// The quantity.
     pub value: f64,
+    /// What the run ended as (penetration: scabbed / perforated / end reason), empty otherwise.
+    pub outcome: String,
 }
 
 /// How the three finest levels converge.
@@ -93,6 +95,10 @@ pub enum Class {
     None(NotConvergent),
     /// Fewer than three levels.
     TooFew,
+    /// The levels' runs end in different outcomes (one perforates, another rebounds): their
+    /// figures are of different events, and an order read off them would be a number where
+    /// there is none.
+    OutcomeChanges(String),
 }
 
 impl Class {
@@ -104,6 +110,7 @@ impl Class {
             Class::None(NotConvergent::Divergent { .. }) => "divergent",
             Class::None(_) => "indeterminate",
             Class::TooFew => "too few levels",
+            Class::OutcomeChanges(_) => "outcome changes with level",
         }
     }
 }
@@ -126,6 +133,11 @@ pub fn classify(levels: &[Level], ratio: f64) -> Class {
         return Class::TooFew;
     }
     let l = &levels[n - 3..];
+    let outcomes: Vec<&str> = l.iter().map(|x| x.outcome.as_str()).collect();
+    if outcomes.iter().any(|o| *o != outcomes[0]) {
+        let list: Vec<String> = l.iter().map(|x| format!("level {}: {}", x.level, x.outcome)).collect();
+        return Class::OutcomeChanges(list.join("; "));
+    }
     let phi = [l[0].value, l[1].value, l[2].value];
     match (richardson(phi, ratio), celik(phi, [l[0].h_m, l[1].h_m, l[2].h_m])) {
         (Ok(eq41), Ok(c)) => Class::Monotone { eq41, celik: c },
@@ -175,7 +187,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
                     let (a, r) = cantilever::run(l)?;
                     Ok((cantilever::columns(l) * cantilever::rows(l), a, r))
                 })?;
-                Ok(Level { level: l, elements: lv.elements, h_m: cantilever::radius_m(l), steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value })
+                Ok(Level { level: l, elements: lv.elements, h_m: cantilever::radius_m(l), steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, outcome: String::new() })
             })
             .collect::<Result<Vec<_>>>()?,
         Case::CrackedPlate => {
@@ -187,7 +199,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
                         Ok((p.elements, p.stress_pa, r))
                     })?;
                     let h_m = Study::EnergyClosePacked.radius_m(l);
-                    Ok(Level { level: l, elements: lv.elements, h_m, steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value })
+                    Ok(Level { level: l, elements: lv.elements, h_m, steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, outcome: String::new() })
                 })
                 .collect::<Result<Vec<_>>>()?
         }
@@ -239,6 +251,12 @@ fn penetration(plan: &Plan) -> Result<Vec<Level>> {
                 dt_s: f("dt_s")?,
                 wall_s: f("wall_s")?,
                 value: f("depth_in")?,
+                outcome: format!(
+                    "scabbed={} perforated={} {}",
+                    store.get(j, "scabbed").unwrap_or(""),
+                    store.get(j, "perforated").unwrap_or(""),
+                    store.get(j, "end_reason").unwrap_or("")
+                ),
             })
         })
         .collect()
@@ -257,7 +275,7 @@ pub fn reference(r: &Report) -> (f64, &'static str) {
 pub fn tables(r: &Report) -> (Table, Table) {
     let (reference, against) = reference(r);
     let q = r.case.quantity();
-    let header: Vec<String> = ["level", "elements", "h_m", "steps", "dt_s", "element_steps", "wall_s", q, "error_rel", "error_against"].iter().map(|s| s.to_string()).collect();
+    let header: Vec<String> = ["level", "elements", "h_m", "steps", "dt_s", "element_steps", "wall_s", q, "error_rel", "error_against", "outcome"].iter().map(|s| s.to_string()).collect();
     let rows = r
         .levels
         .iter()
@@ -273,6 +291,7 @@ pub fn tables(r: &Report) -> (Table, Table) {
                 format!("{:.9e}", l.value),
                 format!("{:.4e}", (l.value - reference) / reference),
                 against.to_string(),
+                l.outcome.clone(),
             ]
         })
         .collect();
@@ -293,12 +312,53 @@ pub fn tables(r: &Report) -> (Table, Table) {
             "three finest levels".into(),
         ],
         Class::None(why) => vec![r.case.name().into(), q.into(), r.case.ratio().to_string(), r.class.word().into(), blank(), blank(), blank(), blank(), blank(), why.to_string()],
+        Class::OutcomeChanges(why) => vec![r.case.name().into(), q.into(), r.case.ratio().to_string(), r.class.word().into(), blank(), blank(), blank(), blank(), blank(), why.clone()],
         Class::TooFew => vec![r.case.name().into(), q.into(), r.case.ratio().to_string(), r.class.word().into(), blank(), blank(), blank(), blank(), blank(), "three levels give an order".into()],
     };
     (levels, Table { header: sh, rows: vec![row] })
 }
 
-/// Default output folder.
-pub fn default_out() -> &'static Path {
-    Path::new("results/converge")
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn levels(values: [f64; 3], outcomes: [&str; 3]) -> Vec<Level> {
+        (0..3)
+            .map(|k| Level {
+                level: k as u32,
+                elements: 100 << (2 * k),
+                h_m: 0.5f64.powi(k as i32),
+                steps: 10 << k,
+                dt_s: 1e-6,
+                wall_s: 1.0 * 8f64.powi(k as i32),
+                value: values[k],
+                outcome: outcomes[k].to_string(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn a_power_law_is_monotone_with_its_order_and_limit() {
+        let v = [0, 1, 2].map(|k| 3.0 + 0.8 * 0.5f64.powi(2 * k));
+        match classify(&levels(v, ["", "", ""]), 2.0) {
+            Class::Monotone { eq41, celik } => {
+                assert!((eq41.order - 2.0).abs() < 1e-12 && (celik.order - 2.0).abs() < 1e-9);
+                assert!((eq41.extrapolate - 3.0).abs() < 1e-12);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    #[test]
+    fn no_order_is_read_off_levels_that_end_differently_or_oscillate() {
+        let v = [37.4, 4.94, 3.22];
+        assert!(matches!(classify(&levels(v, ["perforated", "rebounded", "rebounded"]), 2.0), Class::OutcomeChanges(_)));
+        assert!(matches!(classify(&levels([1.0, 1.2, 1.1], ["", "", ""]), 2.0), Class::None(NotConvergent::Oscillatory { .. })));
+        assert_eq!(classify(&levels(v, ["", "", ""])[..2], 2.0), Class::TooFew);
+        let r = Report { case: Case::Penetration, levels: levels(v, ["a", "b", "b"]), class: Class::OutcomeChanges("x".into()) };
+        let (t, s) = tables(&r);
+        assert_eq!(t.get(2, "error_against"), Some("finest level (no extrapolate: not monotone)"));
+        assert_eq!(s.get(0, "order_eq41"), Some(""), "never a number where there is none");
+    }
 }

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# demsweep's speed, one table per item of [6/6] (medians of REPEATS runs, default 3):
+#   1. the kernel: `demsweep bench` (bonded block and the impact workload, 1 and 2 threads);
+#   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
+#      one thread): steps, Δt, wall, element-steps per second, peak RSS;
+#   3. with FULL=1: the default ballistic sweep on 1 and on 2 threads and the parallel efficiency
+#      (about 40 minutes on this machine);
+#   4. with FULL=1: `converge --mesh 3 --case penetration` cost per level and the exponent of
+#      cost against element count.
+# Timings on this machine vary by ±20 % from minute to minute: compare ratios from one run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+repeats=${REPEATS:-3}
+if [ -z "${DEMSWEEP_BIN:-}" ]; then
+    cargo build --release --quiet
+    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
+else
+    bin=$DEMSWEEP_BIN
+fi
+[ -x /usr/bin/time ] || { apt-get update -qq && apt-get install -y -qq time; }
+work=$(mktemp -d /tmp/demsweep-bench.XXXXXX)
+col() { awk -F, -v name="$2" 'NR==1 {for (i=1;i<=NF;i++) if ($i==name) c=i} NR==2 {print $c}' "$1"; }
+
+echo "== 1. kernel (demsweep bench --workload impact --threads 1,2 --repeats $repeats)"
+"$bin" bench --workload impact --threads 1,2 --repeats "$repeats"
+
+echo
+echo "== 2. one full-resolution penetration event at 500 ft/s, one thread"
+printf '%-4s %8s %12s %9s %16s %12s\n' run steps dt_s wall_s elem_steps_per_s peak_rss_mb
+for k in $(seq 1 "$repeats"); do
+    RAYON_NUM_THREADS=1 /usr/bin/time -f '%M' -o "$work/rss-$k" "$bin" run sweeps/penetration.toml --quiet --out "$work/event-$k" > /dev/null
+    s="$work/event-$k/penetration/summary.csv"
+    printf '%-4s %8s %12.4e %9.2f %16.3e %12.1f\n' "$k" "$(col "$s" steps)" "$(col "$s" dt_s)" "$(col "$s" wall_s)" "$(col "$s" element_steps_per_s)" "$(echo "$(cat "$work/rss-$k") / 1024" | bc -l)"
+done
+
+if [ "${FULL:-0}" = 1 ]; then
+    echo
+    echo "== 3. the default ballistic sweep (500..1500 by 50, both bisections to 5 ft/s)"
+    for t in 1 2; do
+        start=$(date +%s.%N)
+        "$bin" ballistic --threads "$t" --quiet --out "$work/ballistic-$t" > /dev/null
+        end=$(date +%s.%N)
+        echo "$t $(echo "$end - $start" | bc -l)" >> "$work/sweeps"
+        printf 'threads %s: %.1f s\n' "$t" "$(echo "$end - $start" | bc -l)"
+    done
+    awk 'NR==1 {t1=$2} NR==2 {t2=$2} END {printf "parallel efficiency 1 -> 2 threads: %.1f %% (speed-up %.3f)\n", 100 * t1 / (2 * t2), t1 / t2}' "$work/sweeps"
+    echo
+    echo "== 4. converge --mesh 3 --case penetration (levels in parallel, one thread each)"
+    "$bin" converge --mesh 3 --case penetration --quiet --out "$work/converge" > /dev/null
+    python3 - "$work/converge/penetration.csv" <<'PY'
+import csv, math, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+print(f"{'level':>5} {'elements':>9} {'steps':>7} {'wall_s':>8} {'ns/element-step':>16}")
+for r in rows:
+    n, s, w = int(r["elements"]), int(r["steps"]), float(r["wall_s"])
+    print(f"{r['level']:>5} {n:>9} {s:>7} {w:>8.2f} {w / (n * s) * 1e9:>16.1f}")
+n = [math.log(int(r["elements"])) for r in rows]
+w = [math.log(float(r["wall_s"])) for r in rows]
+ws = [math.log(float(r["wall_s"]) / int(r["steps"])) for r in rows]
+def slope(x, y):
+    mx, my = sum(x) / len(x), sum(y) / len(y)
+    return sum((a - mx) * (b - my) for a, b in zip(x, y)) / sum((a - mx) ** 2 for a in x)
+print(f"cost per event ~ N^{slope(n, w):.2f}, cost per step ~ N^{slope(n, ws):.2f} (expected 1.5 and 1)")
+PY
+fi
+echo "(runs in $work)"
