@@ -11,12 +11,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 repeats=${REPEATS:-3}
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 [ -x /usr/bin/time ] || { apt-get update -qq && apt-get install -y -qq time; }
 work=$(mktemp -d /tmp/demsweep-bench.XXXXXX)
 col() { awk -F, -v name="$2" 'NR==1 {for (i=1;i<=NF;i++) if ($i==name) c=i} NR==2 {print $c}' "$1"; }

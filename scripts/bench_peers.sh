@@ -17,12 +17,7 @@ cd "$(dirname "$0")/.."
 root=$(pwd)
 peers_src=${1:-$root/../shared/peers}
 repeats=${REPEATS:-3}
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="${CARGO_TARGET_DIR:-$root/target}/release/demsweep"
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 work=$(mktemp -d /tmp/demsweep-peers.XXXXXX)
 cp -r "$peers_src"/. "$work/"
 nbonds=40054

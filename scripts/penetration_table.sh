@@ -8,13 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1; out=$2; shift 2
-# DEMSWEEP_BIN: a given binary (e.g. a frozen copy while the tree is being edited).
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export bin scene work

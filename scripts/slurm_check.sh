@@ -7,13 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="$root/${CARGO_TARGET_DIR:-target}/release/demsweep"
-    case "${CARGO_TARGET_DIR:-}" in /*) bin="$CARGO_TARGET_DIR/release/demsweep" ;; esac
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 if ! command -v sbatch >/dev/null || ! command -v munged >/dev/null; then
     apt-get update -qq
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq slurm-wlm munge >/dev/null

@@ -9,12 +9,7 @@
 # scene's own) with a coarser step and tolerance than the full study, to keep CI short.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$bin" ballistic --scene sweeps/penetration_ci.toml --v0 "${V0:-300..900}" --step "${STEP:-100}" --tol-fps "${TOL:-12.5}" --out "$work" --quiet

@@ -6,12 +6,7 @@
 # results/thresholds_full_command.txt. About 15 minutes on this 2-core machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-if [ -z "${DEMSWEEP_BIN:-}" ]; then
-    cargo build --release --quiet
-    bin="${CARGO_TARGET_DIR:-target}/release/demsweep"
-else
-    bin=$DEMSWEEP_BIN
-fi
+. scripts/demsweep_bin.sh
 cmd=(ballistic --scene sweeps/penetration.toml --v0 500..1500 --step 50 --tol-fps 5 --out results/ballistic)
 start=$(date +%s)
 "$bin" "${cmd[@]}" "$@"

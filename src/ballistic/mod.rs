@@ -187,30 +187,55 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], t
     if let Some(missing) = planned.iter().find(|j| !store.has(j)) {
         return Err(Error::input(out.display().to_string(), format!("the grid run {} is missing: run every shard first", missing.id())));
     }
-    let (mut ran, mut skipped) = (0, 0);
-    loop {
-        let s = bracket::find(&points(store, &planned, "scabbed"));
-        let p = bracket::find(&points(store, &planned, "perforated"));
-        let mut round: Vec<Job> = Vec::new();
-        if let Some(v) = s.next(tol_fps) {
-            round.push(job(v, "bisect scabbing"));
+    // The two bisections run side by side, each on its own thread at its own pace (no
+    // lock-step rounds), each bracket read from the grid and its own runs only, so that its
+    // sequence of velocities — and the tables — do not depend on which run finished first.
+    let grid_jobs = planned.clone();
+    let shared = std::sync::Mutex::new(&mut *store);
+    let bisect = |column: &str, purpose: &str| -> Result<(Vec<Job>, usize, usize)> {
+        let (mut own, mut ran, mut skipped) = (grid_jobs.clone(), 0, 0);
+        loop {
+            let f = bracket::find(&points(&shared.lock().expect("no run panics while holding the table"), &own, column));
+            let Some(v) = f.next(tol_fps) else { break };
+            let j = job(v, purpose);
+            if engine.run_shared(&j, &shared)? {
+                ran += 1;
+            } else {
+                skipped += 1;
+            }
+            own.push(j);
         }
-        if let Some(v) = p.next(tol_fps)
-            && round.first().is_none_or(|j| j.id() != job(v, "").id())
-        {
-            round.push(job(v, "bisect perforation"));
+        Ok((own, ran, skipped))
+    };
+    // Plain threads, not rayon tasks: a rayon worker that waits (polars writing the Parquet
+    // table uses its own pool) steals other tasks of its pool, and would start the other
+    // bisection inside this one's lock on the table.
+    let threads = if engine.threads == 0 { std::thread::available_parallelism().map_or(1, |n| n.get()) } else { engine.threads };
+    let (s, p) = if threads >= 2 {
+        std::thread::scope(|sc| {
+            let scab = sc.spawn(|| bisect("scabbed", "bisect scabbing"));
+            let perf = bisect("perforated", "bisect perforation");
+            (scab.join().expect("the scabbing bisection does not panic"), perf)
+        })
+    } else {
+        (bisect("scabbed", "bisect scabbing"), bisect("perforated", "bisect perforation"))
+    };
+    let ((own_s, ran_s, skip_s), (own_p, ran_p, skip_p)) = (s?, p?);
+    let (ran, skipped) = (ran_s + ran_p, skip_s + skip_p);
+    for j in own_s.iter().chain(&own_p) {
+        if !planned.iter().any(|k| k.id() == j.id()) {
+            planned.push(j.clone());
         }
-        if round.is_empty() {
-            break;
-        }
-        let done = engine.run(&round, store)?;
-        done.check()?;
-        ran += done.ran;
-        skipped += done.skipped;
-        planned.extend(round);
     }
-    let scabbing = bracket::find(&points(store, &planned, "scabbed"));
-    let perforation = bracket::find(&points(store, &planned, "perforated"));
+    // Each threshold's bracket from its own bisection; runs of the other that contradict it
+    // (an outcome missing above its first appearance) are reported as non-monotone.
+    let finding = |own: &[Job], column: &str| {
+        let mut f = bracket::find(&points(store, own, column));
+        f.exceptions_fps = bracket::find(&points(store, &planned, column)).exceptions_fps;
+        f
+    };
+    let scabbing = finding(&own_s, "scabbed");
+    let perforation = finding(&own_p, "perforated");
     let (lambert_jonas, recht_ipson) = fits(store, &planned, &perforation);
     let SceneFile::Penetration(scene) = &engine.base.scene else { unreachable!("checked at load") };
     let formulas = thresholds::empirical(scene)?;

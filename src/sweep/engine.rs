@@ -31,7 +31,8 @@ pub struct Finished {
 }
 
 impl Engine<'_> {
-    fn pool(&self) -> Result<rayon::ThreadPool> {
+    /// The engine's thread pool.
+    pub fn pool(&self) -> Result<rayon::ThreadPool> {
         rayon::ThreadPoolBuilder::new()
             .num_threads(self.threads)
             .thread_name(|k| format!("demsweep-run-{k}"))
@@ -85,6 +86,31 @@ impl Engine<'_> {
         });
         written?;
         Ok(Finished { ran: todo.len() - failed.len(), skipped, failed })
+    }
+}
+
+impl Engine<'_> {
+    /// Run one job on the calling thread unless `store` holds it, then add it to `store` and
+    /// rewrite the tables (the store shared by concurrent callers, e.g. two bisections). Returns
+    /// whether it ran.
+    pub fn run_shared(&self, job: &Job, store: &std::sync::Mutex<&mut Store>) -> Result<bool> {
+        job.check(self.base)?;
+        {
+            let mut s = store.lock().expect("no run panics while holding the table");
+            if s.has(job) {
+                s.add_purpose(job);
+                return Ok(false);
+            }
+        }
+        let t0 = std::time::Instant::now();
+        let row = run_job(self.base, job).map_err(|e| Error::input("sweep", format!("run {} failed: {e}", job.id())))?;
+        if !self.quiet {
+            eprintln!("[{}] {}: {}  ({:.1} s)", job.purpose, job.id(), super::progress::outcome(&row), t0.elapsed().as_secs_f64());
+        }
+        let mut s = store.lock().expect("no run panics while holding the table");
+        s.insert(job, &self.base.level(), &row)?;
+        s.write()?;
+        Ok(true)
     }
 }
 

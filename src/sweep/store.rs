@@ -142,6 +142,19 @@ impl Store {
         self.rows.is_empty()
     }
 
+    /// A run asked for again for another purpose (both bisections at one velocity): its
+    /// purpose becomes both, sorted, whichever asked first, so the table does not depend on
+    /// timing.
+    pub fn add_purpose(&mut self, job: &Job) {
+        let Some(k) = self.header.iter().position(|h| h == "purpose") else { return };
+        if let Some(row) = self.rows.get_mut(&job.id()) {
+            let mut all: Vec<&str> = row[k].split('+').chain(job.purpose.split('+')).collect();
+            all.sort();
+            all.dedup();
+            row[k] = all.join("+");
+        }
+    }
+
     /// Add a finished run's summary row (the key columns are put in front).
     pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
         let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
@@ -159,7 +172,11 @@ impl Store {
         } else if self.header != header {
             return Err(Error::input(Self::csv_path(&self.dir).display().to_string(), "a run's row has other columns than the table's"));
         }
-        self.rows.insert(job.id(), cells);
+        let again = self.rows.contains_key(&job.id());
+        if !again {
+            self.rows.insert(job.id(), cells);
+        }
+        self.add_purpose(job);
         Ok(())
     }
 

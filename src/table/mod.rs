@@ -85,7 +85,10 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<()> {
     }
     let tmp: PathBuf = {
         let mut name = path.file_name().map(|n| n.to_os_string()).unwrap_or_default();
-        name.push(format!(".tmp-{}", std::process::id()));
+        // Unique per write, so two writers in one process never share a temporary file.
+        static WRITES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+        let k = WRITES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+        name.push(format!(".tmp-{}-{k}", std::process::id()));
         path.with_file_name(name)
     };
     let result = (|| -> std::io::Result<()> {
