@@ -84,14 +84,6 @@ impl Progress {
         }
     }
 
-    /// More runs were planned (a bisection round).
-    pub fn add(&mut self, n: usize) {
-        self.total += n;
-        if let Some(b) = &self.bar {
-            b.set_length(self.total as u64);
-        }
-    }
-
     /// Clear the bar.
     pub fn finish(&self) {
         if let Some(b) = &self.bar {

@@ -49,8 +49,7 @@ pub struct Store {
     pub header: Vec<String>,
     /// Rows by run id.
     rows: BTreeMap<String, Vec<String>>,
-    /// Write `runs.parquet` with every update (off for a shard's quick rewrites is never needed:
-    /// a sweep's table is small).
+    /// Write `runs.parquet` beside the CSV with every update.
     pub parquet: bool,
 }
 
@@ -118,12 +117,6 @@ impl Store {
     /// Whether `job` has finished.
     pub fn has(&self, job: &Job) -> bool {
         self.rows.contains_key(&job.id())
-    }
-
-    /// The row of `job`, as (column, text).
-    pub fn row(&self, job: &Job) -> Option<Vec<(&str, &str)>> {
-        let r = self.rows.get(&job.id())?;
-        Some(self.header.iter().map(String::as_str).zip(r.iter().map(String::as_str)).collect())
     }
 
     /// The cell of column `name` of `job`'s row.
