@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # demsweep's speed, one table per item of [6/6] (medians of REPEATS runs, default 3):
-#   1. the kernel: `demsweep bench` (bonded block and the impact workload, 1 and 2 threads);
+#   1. the kernel: `demsweep bench` (bonded block and the impact workload, 1 and 2 threads), then
+#      `demsweep bench --laws`: the block with each optional law on and off beside the simple
+#      kernel (linear springs, central differences), and the bytes per element and per contact;
 #   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
 #      one thread): steps, Δt, wall, element-steps per second, peak RSS;
 #   3. with FULL=1: the default ballistic sweep on 1 and on 2 threads and the parallel efficiency
@@ -18,6 +20,8 @@ col() { awk -F, -v name="$2" 'NR==1 {for (i=1;i<=NF;i++) if ($i==name) c=i} NR==
 
 echo "== 1. kernel (demsweep bench --workload impact --threads 1,2 --repeats $repeats)"
 "$bin" bench --workload impact --threads 1,2 --repeats "$repeats"
+echo
+"$bin" bench --laws --steps 300 --repeats "$((repeats > 5 ? repeats : 5))"
 
 echo
 echo "== 2. one full-resolution penetration event at 500 ft/s, one thread"
@@ -27,6 +31,24 @@ for k in $(seq 1 "$repeats"); do
     s="$work/event-$k/penetration/summary.csv"
     printf '%-4s %8s %12.4e %9.2f %16.3e %12.1f\n' "$k" "$(col "$s" steps)" "$(col "$s" dt_s)" "$(col "$s" wall_s)" "$(col "$s" element_steps_per_s)" "$(echo "$(cat "$work/rss-$k") / 1024" | bc -l)"
 done
+
+echo
+echo "== 2b. the same event two at a time, one per core (what a sweep on two threads asks of the machine)"
+for k in $(seq 1 "$repeats"); do
+    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-a-$k" > /dev/null &
+    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-b-$k" > /dev/null
+    wait
+    for x in a b; do col "$work/pair-$x-$k/penetration/summary.csv" wall_s >> "$work/pair-walls"; done
+done
+for k in $(seq 1 "$repeats"); do col "$work/event-$k/penetration/summary.csv" wall_s >> "$work/alone-walls"; done
+python3 - "$work/alone-walls" "$work/pair-walls" <<'PY'
+import statistics, sys
+alone = [float(x) for x in open(sys.argv[1])]
+pair = [float(x) for x in open(sys.argv[2])]
+a, p = statistics.median(alone), statistics.median(pair)
+print(f"alone: median {a:.2f} s of {len(alone)}; two at once: median {p:.2f} s of {len(pair)}; slowdown {p / a:.3f}")
+print(f"=> ceiling on the parallel efficiency of any two-thread sweep of such runs: {100 * a / p:.0f} %")
+PY
 
 if [ "${FULL:-0}" = 1 ]; then
     echo

@@ -1,6 +1,6 @@
 //! `demsweep bench`: the kernel's speed on the benchmark workloads, one thread and all threads.
 
-use crate::bench::{self, COLUMNS, Figures, ROWS, Workload};
+use crate::bench::{self, COLUMNS, Figures, Laws, ROWS, Workload};
 use crate::error::{Error, Result};
 
 /// Arguments of `demsweep bench`.
@@ -20,6 +20,44 @@ pub struct Args {
     /// Thread counts to measure (default: 1 and all available).
     #[arg(long, value_delimiter = ',')]
     pub threads: Vec<usize>,
+    /// Instead: the block on one thread with no optional law, each one alone, all of them, and
+    /// the simple kernel (linear springs, central differences, serial scatter), timed in turn.
+    #[arg(long)]
+    pub laws: bool,
+}
+
+/// `--laws`: "model only what a scene needs" and the full law against the simple kernel.
+fn laws(args: &Args) -> Result<()> {
+    let none = Laws::default();
+    let sets = [
+        none,
+        Laws { friction: true, ..none },
+        Laws { damping: true, ..none },
+        Laws { rate: true, ..none },
+        Laws { compaction: true, ..none },
+        Laws::ALL,
+    ];
+    println!("demsweep bench --laws: close-packed block {COLUMNS} × {ROWS}, one thread, {} steps × {} rounds (round-robin), medians", args.steps, args.repeats);
+    let rows = bench::measure_laws(&sets, COLUMNS, ROWS, args.steps, args.repeats)?;
+    let (none_s, simple_s) = (rows[0].step_s, rows[rows.len() - 1].step_s);
+    for (name, laws) in [("none", none), ("all", Laws::ALL)] {
+        let (e, c) = bench::footprint(&bench::workload_with(COLUMNS, ROWS, laws)?);
+        println!("memory, optional parts {name}: {e:.0} bytes per element, {c:.0} bytes per contact");
+    }
+    println!("{:>22}  {:>8}  {:>8}  {:>16}  {:>8}  {:>9}", "optional parts", "contacts", "ms/step", "(min–max)", "/ none", "/ simple");
+    for r in &rows {
+        println!(
+            "{:>22}  {:>8}  {:>8.3}  ({:.3}–{:.3})  {:>8.3}  {:>9.3}",
+            r.name,
+            r.contacts,
+            r.step_s * 1e3,
+            r.range_s.0 * 1e3,
+            r.range_s.1 * 1e3,
+            r.step_s / none_s,
+            r.step_s / simple_s
+        );
+    }
+    Ok(())
 }
 
 fn row(name: &str, f: &Figures) {
@@ -42,6 +80,9 @@ fn row(name: &str, f: &Figures) {
 pub fn run(args: Args) -> Result<()> {
     if args.steps == 0 || args.repeats == 0 {
         return Err(Error::input("--steps/--repeats", "must be ≥ 1"));
+    }
+    if args.laws {
+        return laws(&args);
     }
     let all = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
     let threads = if args.threads.is_empty() { if all > 1 { vec![1, all] } else { vec![1] } } else { args.threads };

@@ -11,6 +11,7 @@ pub mod range;
 pub mod run;
 pub mod scene;
 pub mod sweep;
+pub mod timestep;
 pub mod validate;
 
 /// demsweep: deterministic 2D DEM of concrete impact, with the empirical formulas beside it.
@@ -46,6 +47,9 @@ pub enum Command {
     Merge(ballistic::MergeArgs),
     /// Empirical concrete-impact formulas: penetration, scabbing and perforation thickness.
     Empirical(empirical::Args),
+    /// Run a penetration scene and measure its top frequency as it goes: the step against the
+    /// measured instability threshold.
+    Timestep(timestep::Args),
 }
 
 /// Run the parsed command.
@@ -61,5 +65,6 @@ pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
         Command::Ballistic(args) => ballistic::run(args),
         Command::Merge(args) => ballistic::merge(args),
         Command::Converge(args) => converge::run(args),
+        Command::Timestep(args) => timestep::run(args),
     }
 }

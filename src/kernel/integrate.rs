@@ -117,7 +117,7 @@ pub fn rigid_frames(el: &Elements, pos: &[[f64; 3]], vel: &[[f64; 3]], bodies: u
 /// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts are summed in
 /// the adjacency's fixed order.
 #[inline(always)]
-fn total_force(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
+fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
     let [fx, fy, tz] = match sums.get(e) {
         Some(&summed) => summed,
         None => {
@@ -138,6 +138,9 @@ fn total_force(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, l
             [fx, fy, tz]
         }
     };
+    if !EXTERNAL {
+        return ([fx, fy, tz], [0.0, 0.0]);
+    }
     let (mut ex, mut ey) = (mass_kg * gravity[0], mass_kg * gravity[1]);
     if load != 0 {
         let l = drive.load_force_n[load as usize - 1];
@@ -149,16 +152,30 @@ fn total_force(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, l
 
 /// Forces of every element for the current contact forces (no motion), as `advance` would see them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    (0..el.len()).map(|e| total_force(e, contacts, &[], el.mass[e], el.load[e], drive, gravity).0).collect()
+    (0..el.len()).map(|e| total_force::<true>(e, contacts, &[], el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
-/// Advance every element by one step. `FRAME`: the mass-proportional damping acts on the
+/// What the motion stage of a model has to do, resolved once per step from its parameters
+/// (as the contact law's parts are): the mass-proportional damping and the work of external
+/// forces cost nothing in a scene without them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MotionParts {
+    /// The mass-proportional damping acts relative to each body's rigid motion.
+    pub frame: bool,
+    /// α > 0.
+    pub damped: bool,
+    /// Gravity or a load group acts (their work is booked).
+    pub external: bool,
+}
+
+/// Advance every element by one step. `parts.frame`: the mass-proportional damping acts on the
 /// velocity relative to the element's body's rigid motion (`drive.rigid_frame`), so that a
 /// free body can translate and rotate undamped (quasi-static loading by dynamic relaxation).
 /// `sums`: the contact forces already summed per element by stage 1 (one thread), or empty to
 /// gather them here over the adjacency.
 #[allow(clippy::too_many_arguments)]
-pub fn advance<const FRAME: bool>(
+pub fn advance(
+    parts: MotionParts,
     el: &Elements,
     pos: &mut [[f64; 3]],
     vel: &mut [[f64; 3]],
@@ -172,25 +189,67 @@ pub fn advance<const FRAME: bool>(
     partial: &mut [MotionReport],
     parallel: bool,
 ) {
-    let Elements { mass, inertia, inv_mass, inv_inertia, motion, load, radius, body, prescribed, .. } = el;
+    macro_rules! arms {
+        ($($f:literal $d:literal $x:literal),*) => {
+            match (parts.frame, parts.damped, parts.external) {
+                $(($f, $d, $x) => advance_with::<$f, $d, $x>(el, pos, vel, force, contacts, sums, rebuild_pos, margin_m, drive, p, partial, parallel),)*
+            }
+        };
+    }
+    arms!(false false false, false false true, false true false, false true true, true false false, true false true, true true false, true true true)
+}
+
+fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
+    &a[base..base + n]
+}
+
+#[allow(clippy::too_many_arguments)]
+fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(
+    el: &Elements,
+    pos: &mut [[f64; 3]],
+    vel: &mut [[f64; 3]],
+    force: &mut [[f64; 3]],
+    contacts: &Contacts,
+    sums: &[[f64; 3]],
+    rebuild_pos: &[[f64; 2]],
+    margin_m: &[f64],
+    drive: Drive<'_>,
+    p: MotionParams,
+    partial: &mut [MotionReport],
+    parallel: bool,
+) {
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
     let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
-        for (o, ((x, v), f)) in ps.iter_mut().zip(vs.iter_mut()).zip(fs.iter_mut()).enumerate() {
-            let e = k * CHUNK + o;
-            let m = mass[e];
-            let ([fx, fy, tz], [ex, ey]) = total_force(e, contacts, sums, m, load[e], drive, p.gravity_mps2);
-            *f = [fx, fy, tz];
-            let v0 = *v;
-            let v1 = if motion[e] != 0 {
-                let w = drive.motion_velocity[motion[e] as usize - 1];
-                let mask = prescribed[e];
+        // The chunk's slices of every per-element array, all of its length: no bounds checks
+        // in the loop.
+        let (base, n) = (k * CHUNK, ps.len());
+        let (mass, inertia, inv_mass, inv_inertia, radius, margin) = (
+            cut(&el.mass, base, n),
+            cut(&el.inertia, base, n),
+            cut(&el.inv_mass, base, n),
+            cut(&el.inv_inertia, base, n),
+            cut(&el.radius, base, n),
+            cut(margin_m, base, n),
+        );
+        let (motion, load, body, prescribed, refs) =
+            (cut(&el.motion, base, n), cut(&el.load, base, n), cut(&el.body, base, n), cut(&el.prescribed, base, n), cut(rebuild_pos, base, n));
+        let (vs, fs) = (&mut vs[..n], &mut fs[..n]);
+        let (mut bad, mut drifted) = (false, false);
+        for o in 0..n {
+            let (e, x) = (base + o, &mut ps[o]);
+            let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(e, contacts, sums, mass[o], load[o], drive, p.gravity_mps2);
+            fs[o] = [fx, fy, tz];
+            let v0 = vs[o];
+            let v1 = if motion[o] != 0 {
+                let w = drive.motion_velocity[motion[o] as usize - 1];
+                let mask = prescribed[o];
                 // Prescribed dofs take the drive's velocity (the actuator holds the element
                 // against everything else acting on it); free dofs move undamped by their force
                 // (a roller slides freely).
-                let g = [fx * inv_mass[e], fy * inv_mass[e], tz * inv_inertia[e]];
+                let g = [fx * inv_mass[o], fy * inv_mass[o], tz * inv_inertia[o]];
                 let mut v1 = [0.0; 3];
                 for d in 0..3 {
                     if mask & (1 << d) != 0 {
@@ -201,37 +260,59 @@ pub fn advance<const FRAME: bool>(
                     }
                 }
                 v1
-            } else {
+            } else if DAMPED {
                 // Reference velocity of the damping: zero, or the body's rigid motion here.
                 let vr = if FRAME {
-                    let g = drive.rigid_frame[body[e] as usize];
+                    let g = drive.rigid_frame[body[o] as usize];
                     [g[0] - g[2] * (x[1] - g[4]), g[1] + g[2] * (x[0] - g[3]), g[2]]
                 } else {
                     [0.0; 3]
                 };
                 let v1 = [
-                    c1 * v0[0] + c2 * fx * inv_mass[e] + c3 * vr[0],
-                    c1 * v0[1] + c2 * fy * inv_mass[e] + c3 * vr[1],
-                    c1 * v0[2] + c2 * tz * inv_inertia[e] + c3 * vr[2],
+                    c1 * v0[0] + c2 * fx * inv_mass[o] + c3 * vr[0],
+                    c1 * v0[1] + c2 * fy * inv_mass[o] + c3 * vr[1],
+                    c1 * v0[2] + c2 * tz * inv_inertia[o] + c3 * vr[2],
                 ];
                 let mid = [0.5 * (v0[0] + v1[0]) - vr[0], 0.5 * (v0[1] + v1[1]) - vr[1], 0.5 * (v0[2] + v1[2]) - vr[2]];
                 r.mass_damping_j +=
-                    p.alpha_per_s * (m * (mid[0] * mid[0] + mid[1] * mid[1]) + inertia[e] * mid[2] * mid[2]) * p.dt_s;
-                r.external_j += (ex * v1[0] + ey * v1[1]) * p.dt_s;
+                    p.alpha_per_s * (mass[o] * (mid[0] * mid[0] + mid[1] * mid[1]) + inertia[o] * mid[2] * mid[2]) * p.dt_s;
                 v1
+            } else {
+                // α = 0: c1 = 1, c2 = Δt, c3 = 0, written out so that the bits are those of
+                // the damped form with α = 0.
+                [
+                    1.0 * v0[0] + p.dt_s * fx * inv_mass[o] + 0.0,
+                    1.0 * v0[1] + p.dt_s * fy * inv_mass[o] + 0.0,
+                    1.0 * v0[2] + p.dt_s * tz * inv_inertia[o] + 0.0,
+                ]
             };
-            *v = v1;
+            if EXTERNAL && motion[o] == 0 {
+                r.external_j += (ex * v1[0] + ey * v1[1]) * p.dt_s;
+            }
+            vs[o] = v1;
             x[0] += p.dt_s * v1[0];
             x[1] += p.dt_s * v1[1];
             x[2] += p.dt_s * v1[2];
-            let spin = v1[2].abs() * radius[e];
+            let spin = v1[2].abs() * radius[o];
             let speed2 = v1[0] * v1[0] + v1[1] * v1[1] + spin * spin;
-            // NaN fails every comparison: `is_le` of a partial comparison catches it.
-            if !speed2.partial_cmp(&limit2).is_some_and(|o| o.is_le()) && r.first_bad == usize::MAX {
-                r.first_bad = e;
-            }
-            let (dx, dy) = (x[0] - rebuild_pos[e][0], x[1] - rebuild_pos[e][1]);
-            r.drifted |= dx * dx + dy * dy > margin_m[e] * margin_m[e];
+            // NaN fails every comparison: the negated `<=` catches it.
+            #[allow(clippy::neg_cmp_op_on_partial_ord)]
+            let too_fast = !(speed2 <= limit2);
+            bad |= too_fast;
+            let (dx, dy) = (x[0] - refs[o][0], x[1] - refs[o][1]);
+            drifted |= dx * dx + dy * dy > margin[o] * margin[o];
+        }
+        r.drifted = drifted;
+        if bad {
+            r.first_bad = base
+                + vs.iter().zip(radius).position(|(v, r)| {
+                    let spin = v[2].abs() * r;
+                    let speed2 = v[0] * v[0] + v[1] * v[1] + spin * spin;
+                    #[allow(clippy::neg_cmp_op_on_partial_ord)]
+                    let too_fast = !(speed2 <= limit2);
+                    too_fast
+                })
+                .expect("an element was too fast");
         }
         r
     };

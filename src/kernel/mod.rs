@@ -216,11 +216,12 @@ impl Model {
         let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
         let st = &mut self.state;
         let (el, p) = (&self.el, self.motion);
-        if self.damp_relative_to_rigid {
-            integrate::advance::<true>(el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
-        } else {
-            integrate::advance::<false>(el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
-        }
+        let parts = integrate::MotionParts {
+            frame: self.damp_relative_to_rigid,
+            damped: p.alpha_per_s != 0.0,
+            external: p.gravity_mps2 != [0.0, 0.0] || !self.loads.is_empty(),
+        };
+        integrate::advance(parts, el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
         let mut total = MotionReport::default();
         for r in &s.motion_partial {
             total.merge(r);

@@ -12,11 +12,15 @@ use std::time::Instant;
 
 use crate::cases::seed;
 use crate::error::Result;
+use crate::kernel::law::compaction::CompactionSpec;
+use crate::kernel::law::rate::RateSpec;
 use crate::kernel::{Model, ModelBuilder};
 use crate::lattice::{self, Rect};
 use crate::material::{Arrangement, Material, Plane};
 use crate::shape::{Nose, Projectile};
 use crate::units::{fps_to_mps, in_to_m, lb_to_kg};
+
+pub mod simple;
 
 /// Elements per row of the benchmark block.
 pub const COLUMNS: usize = 120;
@@ -43,9 +47,48 @@ fn block_rect(columns: usize, rows: usize) -> (Rect, f64) {
     (Rect { x_min_m: 0.0, x_max_m: 2.0 * r * columns as f64, y_min_m: 0.0, y_max_m: 2.0 * r + 3f64.sqrt() * r * (rows as f64 - 0.5) }, r)
 }
 
+/// The optional law parts the block workload turns on (each costs only when on).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct Laws {
+    /// Coulomb friction (μ = 0.5) on frictional contacts (the block has none touching: its cost
+    /// is the branch alone).
+    pub friction: bool,
+    /// Stiffness-proportional dashpots, β = 1e-8 s (0.9 % of critical at the block's top mode).
+    pub damping: bool,
+    /// The rate laws (CEB moduli, Klepaczko tension, CEB compression), defaults of `RateSpec`.
+    pub rate: bool,
+    /// Compaction (HJC constants of the penetration scene: K_c = 0.5 Kn, full at 5 %).
+    pub compaction: bool,
+}
+
+impl Laws {
+    /// Every optional part on.
+    pub const ALL: Laws = Laws { friction: true, damping: true, rate: true, compaction: true };
+
+    /// A short name: "none", "all" or the parts joined by '+'.
+    pub fn name(&self) -> String {
+        let on: Vec<&str> = [(self.friction, "friction"), (self.damping, "damping"), (self.rate, "rate"), (self.compaction, "compaction")]
+            .iter()
+            .filter(|p| p.0)
+            .map(|p| p.1)
+            .collect();
+        match on.len() {
+            0 => "none".into(),
+            4 => "all".into(),
+            _ => on.join("+"),
+        }
+    }
+}
+
 /// The block workload: concrete-like close-packed block, R = 6.35 mm (the source's 0.25 in),
-/// plane strain, bonds that do not break, pseudo-random initial velocities of order 1 m/s.
+/// plane strain, bonds that do not break, pseudo-random initial velocities of order 1 m/s; μ = 0.5
+/// (friction on, as in every scene with frictional contacts).
 pub fn workload(columns: usize, rows: usize) -> Result<Model> {
+    workload_with(columns, rows, Laws { friction: true, ..Laws::default() })
+}
+
+/// The block workload with the optional law parts `laws` on.
+pub fn workload_with(columns: usize, rows: usize, laws: Laws) -> Result<Model> {
     let (rect, r) = block_rect(columns, rows);
     let lat = lattice::close_packed(&rect, r)?;
     let mut b = ModelBuilder::new(Plane::Strain, THICKNESS_M);
@@ -53,8 +96,14 @@ pub fn workload(columns: usize, rows: usize) -> Result<Model> {
         tensile_strength_pa: 2.07e6,
         compressive_strength_pa: 20.7e6,
         fracture_toughness_pa_sqrt_m: 1.0e6,
+        friction_coefficient: if laws.friction { 0.5 } else { 0.0 },
+        rate: laws.rate.then(RateSpec::default),
+        compaction: laws.compaction.then_some(CompactionSpec { stiffness_ratio: 0.5, full_strain: 0.05 }),
         ..Material::elastic("concrete", 21.5e9, 0.2, 2320.0)
     };
+    if laws.damping {
+        b.beta_s = 1e-8;
+    }
     let m = b.add_material(concrete);
     let body = b.add_body("block", &lat, Arrangement::ClosePacked, m, &[], [0.0; 3]);
     // Velocities are set before the model is built, so the integrator is primed with them.
@@ -183,4 +232,85 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
             local_updates_per_1000: 1000.0 * local as f64 / steps as f64,
         })
     })
+}
+
+/// One row of the optional-law benchmark.
+#[derive(Debug, Clone)]
+pub struct LawFigures {
+    /// "none", "all", the parts on, or "simple" (the simple kernel of [`simple`]).
+    pub name: String,
+    /// Contacts stepped.
+    pub contacts: usize,
+    /// Median wall time per step, s.
+    pub step_s: f64,
+    /// Fastest and slowest repeat, s per step.
+    pub range_s: (f64, f64),
+}
+
+/// The block on one thread with each set of optional parts in `sets`, and the simple kernel,
+/// timed round-robin (each round times every variant once, so that the machine's drift is
+/// shared) for `repeats` rounds of `steps` steps.
+pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repeats: usize) -> Result<Vec<LawFigures>> {
+    let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("thread pool");
+    pool.install(|| {
+        let mut models = sets.iter().map(|&l| workload_with(columns, rows, l)).collect::<Result<Vec<_>>>()?;
+        let mut plain = simple::Simple::from_model(&workload_with(columns, rows, Laws::default())?);
+        for m in &mut models {
+            m.run_steps(steps.min(200))?;
+        }
+        for _ in 0..steps.min(200) {
+            plain.step();
+        }
+        let mut times = vec![Vec::with_capacity(repeats); sets.len() + 1];
+        for _ in 0..repeats {
+            for (m, t) in models.iter_mut().zip(times.iter_mut()) {
+                let t0 = Instant::now();
+                m.run_steps(steps)?;
+                t.push(t0.elapsed().as_secs_f64() / steps as f64);
+            }
+            let t0 = Instant::now();
+            for _ in 0..steps {
+                plain.step();
+            }
+            times[sets.len()].push(t0.elapsed().as_secs_f64() / steps as f64);
+        }
+        let mut out = Vec::new();
+        for (k, t) in times.iter_mut().enumerate() {
+            t.sort_by(f64::total_cmp);
+            let (name, contacts) = match sets.get(k) {
+                Some(l) => (l.name(), models[k].state.contacts.len()),
+                None => ("simple".to_string(), plain.bonds()),
+            };
+            out.push(LawFigures { name, contacts, step_s: t[t.len() / 2], range_s: (t[0], t[t.len() - 1]) });
+        }
+        Ok(out)
+    })
+}
+
+/// Memory a model's stepping arrays take: (bytes per element, bytes per contact). Per element:
+/// the constants of `Elements`, the state (positions, velocities, forces, neighbour reference
+/// and margin), the adjacency's row start and stage 1's one-thread force sums; per contact: the
+/// contact with its history, the optional parts' slot (when on), the force (used by the
+/// pooled gather) and the two adjacency entries. The broad phase's grid is transient and not
+/// counted.
+pub fn footprint(model: &Model) -> (f64, f64) {
+    use std::mem::size_of;
+    use crate::kernel::contacts::{Contact, ContactForce};
+    use crate::kernel::law::Extra;
+    let (n, c) = (model.el.len().max(1), model.state.contacts.len().max(1));
+    let el = &model.el;
+    let constants = el.radius.len() * 5 * size_of::<f64>()
+        + el.prescribed.len()
+        + (el.kind.len() + el.body.len() + el.motion.len() + el.load.len()) * size_of::<u16>()
+        + el.initial.len() * 16
+        + el.initial_velocity.len() * 24;
+    let st = &model.state;
+    let state = (st.pos.len() + st.vel.len() + st.force.len()) * 24 + st.rebuild_pos.len() * 16 + st.margin_m.len() * 8;
+    let per_element = (constants + state) as f64 / n as f64 + size_of::<u32>() as f64 + 24.0;
+    let cs = &st.contacts;
+    let per_contact = size_of::<Contact>() as f64
+        + if cs.extra.is_empty() { 0.0 } else { size_of::<Extra>() as f64 }
+        + size_of::<ContactForce>() as f64
+        + cs.adj.len() as f64 * size_of::<u32>() as f64 / c as f64;
+    (per_element, per_contact)
 }
