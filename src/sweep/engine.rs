@@ -98,7 +98,13 @@ impl Engine<'_> {
         {
             let mut s = store.lock().expect("no run panics while holding the table");
             if s.has(job) {
-                s.add_purpose(job);
+                // Written at once: a bisection that finds every run it asks for done makes no
+                // insert that would write the table later, and its purpose would be lost on one
+                // thread while two threads, interleaving inserts, kept it (regression test
+                // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
+                if s.add_purpose(job) {
+                    s.write()?;
+                }
                 return Ok(false);
             }
         }

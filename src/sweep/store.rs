@@ -137,15 +137,17 @@ impl Store {
 
     /// A run asked for again for another purpose (both bisections at one velocity): its
     /// purpose becomes both, sorted, whichever asked first, so the table does not depend on
-    /// timing.
-    pub fn add_purpose(&mut self, job: &Job) {
-        let Some(k) = self.header.iter().position(|h| h == "purpose") else { return };
-        if let Some(row) = self.rows.get_mut(&job.id()) {
-            let mut all: Vec<&str> = row[k].split('+').chain(job.purpose.split('+')).collect();
-            all.sort();
-            all.dedup();
-            row[k] = all.join("+");
-        }
+    /// timing. Returns whether the row changed.
+    pub fn add_purpose(&mut self, job: &Job) -> bool {
+        let Some(k) = self.header.iter().position(|h| h == "purpose") else { return false };
+        let Some(row) = self.rows.get_mut(&job.id()) else { return false };
+        let mut all: Vec<&str> = row[k].split('+').chain(job.purpose.split('+')).collect();
+        all.sort();
+        all.dedup();
+        let merged = all.join("+");
+        let changed = merged != row[k];
+        row[k] = merged;
+        changed
     }
 
     /// Add a finished run's summary row (the key columns are put in front).
