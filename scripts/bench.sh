@@ -27,20 +27,21 @@ echo
 echo "== 2. one full-resolution penetration event at 500 ft/s, one thread"
 printf '%-4s %8s %12s %9s %16s %12s\n' run steps dt_s wall_s elem_steps_per_s peak_rss_mb
 for k in $(seq 1 "$repeats"); do
-    RAYON_NUM_THREADS=1 /usr/bin/time -f '%M' -o "$work/rss-$k" "$bin" run sweeps/penetration.toml --quiet --out "$work/event-$k" > /dev/null
+    RAYON_NUM_THREADS=1 /usr/bin/time -f '%M' -o "$work/rss-$k" "$bin" run sweeps/penetration.toml --quiet --out "$work/event-$k" > /dev/null 2>&1
     s="$work/event-$k/penetration/summary.csv"
     printf '%-4s %8s %12.4e %9.2f %16.3e %12.1f\n' "$k" "$(col "$s" steps)" "$(col "$s" dt_s)" "$(col "$s" wall_s)" "$(col "$s" element_steps_per_s)" "$(echo "$(cat "$work/rss-$k") / 1024" | bc -l)"
 done
 
 echo
-echo "== 2b. the same event two at a time, one per core (what a sweep on two threads asks of the machine)"
+echo "== 2b. the same event alone and two at a time, one per core, interleaved (what a sweep on two threads asks of the machine)"
 for k in $(seq 1 "$repeats"); do
-    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-a-$k" > /dev/null &
-    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-b-$k" > /dev/null
+    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/alone-$k" > /dev/null 2>&1
+    col "$work/alone-$k/penetration/summary.csv" wall_s >> "$work/alone-walls"
+    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-a-$k" > /dev/null 2>&1 &
+    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-b-$k" > /dev/null 2>&1
     wait
     for x in a b; do col "$work/pair-$x-$k/penetration/summary.csv" wall_s >> "$work/pair-walls"; done
 done
-for k in $(seq 1 "$repeats"); do col "$work/event-$k/penetration/summary.csv" wall_s >> "$work/alone-walls"; done
 python3 - "$work/alone-walls" "$work/pair-walls" <<'PY'
 import statistics, sys
 alone = [float(x) for x in open(sys.argv[1])]

@@ -54,7 +54,17 @@ fn an_oblique_impact_at_45_degrees_runs_to_a_settled_outcome_with_the_ledger_clo
     assert!(finite(&f));
     assert_ne!(r.end_reason, "time_cap", "{o:?}");
     assert!(o.depth_in > 0.5, "it went in: {o:?}");
-    assert!(r.energy_error.abs() < 0.01, "energy error {}", r.energy_error);
+    // The ledger's error is first order in Δt (contacts switching on and off within a step):
+    // at the default step it sits at the 1 % line (1.000 % since the rate law reads centred
+    // velocities, 0.88 % before), at half the step at half that. A ledger that missed a
+    // mechanism would not shrink with the step: both are asserted.
+    let mut half = s.clone();
+    half.penetration.safety = 0.45;
+    let h = run(&half, Hooks::default()).unwrap();
+    let (e1, e2) = (r.energy_error.abs(), h.row.run.energy_error.abs());
+    assert!(e2 < 0.01, "energy error at half the step {e2}");
+    assert!((1.5..2.5).contains(&(e1 / e2)), "energy error {e1} at the default step, {e2} at half: not first order");
+    assert_eq!(h.row.outcome.perforated, o.perforated, "the outcome changed with the step");
     // The tip was placed on the front face at mid-span, the axis 45° from the normal.
     let axis = f.detector.layout.axis;
     assert!((axis[0] - (0.5f64).sqrt()).abs() < 1e-12 && (axis[1] + (0.5f64).sqrt()).abs() < 1e-12);

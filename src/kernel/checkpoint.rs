@@ -22,7 +22,7 @@ const MAGIC: [u8; 8] = *b"DEMSWCK\0";
 /// Format version: 2 is the serde-derived state (1 was a hand-listed record); 3 drops the
 /// zero shift of the rate-dependent springs (secant moduli) and adds each bond's mean rate
 /// (`law::rate`).
-const VERSION: u32 = 3;
+const VERSION: u32 = 4;
 
 #[derive(Serialize, Deserialize)]
 struct Header {

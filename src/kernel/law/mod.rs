@@ -242,12 +242,15 @@ pub struct Extra {
     pub rate_mean_per_s: f64,
     /// Modulus ratio the springs had in the last step.
     pub modulus_ratio: f64,
+    /// Relative normal velocity of the last step (half-step value), m/s: the rate part reads
+    /// the mean of it and this step's (see [`rate`], "The rate").
+    pub vn_last_mps: f64,
 }
 
 impl Extra {
     /// A contact at rest with initial length `length0_m`.
     pub fn new(length0_m: f64) -> Extra {
-        Extra { length0_m, rate_per_s: 0.0, rate_mean_per_s: 0.0, modulus_ratio: 1.0 }
+        Extra { length0_m, rate_per_s: 0.0, rate_mean_per_s: 0.0, modulus_ratio: 1.0, vn_last_mps: 0.0 }
     }
 }
 
@@ -335,7 +338,7 @@ pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &
     let mut ratios = rate::STATIC;
     let (mut kn_last, mut kt_last) = (kn, kt);
     if P::RATE && k.rate.enabled {
-        ratios = k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, g.vn_mps, 1.0 / x.length0_m);
+        ratios = k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(g.vn_mps, &mut x.vn_last_mps), 1.0 / x.length0_m);
         let ratio = if opening - c.dp_m < 0.0 { ratios[0] } else { ratios[1] };
         (kn_last, kt_last) = (kn * x.modulus_ratio, kt * x.modulus_ratio);
         x.modulus_ratio = ratio;
