@@ -168,31 +168,43 @@ pub struct MotionParts {
     pub external: bool,
 }
 
+/// What the motion stage reads and writes in one step.
+pub struct Motion<'a> {
+    /// Element constants.
+    pub el: &'a Elements,
+    /// Positions [x m, y m, θ rad] (advanced).
+    pub pos: &'a mut [[f64; 3]],
+    /// Half-step velocities (advanced).
+    pub vel: &'a mut [[f64; 3]],
+    /// Total force per element [Fx N, Fy N, T N·m] (output).
+    pub force: &'a mut [[f64; 3]],
+    /// Contacts, with their forces and adjacency for the gather.
+    pub contacts: &'a Contacts,
+    /// The contact forces already summed per element by stage 1 (one thread), or empty to
+    /// gather them here over the adjacency.
+    pub sums: &'a [[f64; 3]],
+    /// Positions at the last neighbour update, m.
+    pub rebuild_pos: &'a [[f64; 2]],
+    /// Neighbour margins, m.
+    pub margin_m: &'a [f64],
+    /// Loads, prescribed velocities, rigid frames of this step.
+    pub drive: Drive<'a>,
+    /// Δt, α, gravity, speed limit.
+    pub p: MotionParams,
+    /// One report per chunk (output).
+    pub partial: &'a mut [MotionReport],
+    /// Chunks on rayon's pool.
+    pub parallel: bool,
+}
+
 /// Advance every element by one step. `parts.frame`: the mass-proportional damping acts on the
 /// velocity relative to the element's body's rigid motion (`drive.rigid_frame`), so that a
 /// free body can translate and rotate undamped (quasi-static loading by dynamic relaxation).
-/// `sums`: the contact forces already summed per element by stage 1 (one thread), or empty to
-/// gather them here over the adjacency.
-#[allow(clippy::too_many_arguments)]
-pub fn advance(
-    parts: MotionParts,
-    el: &Elements,
-    pos: &mut [[f64; 3]],
-    vel: &mut [[f64; 3]],
-    force: &mut [[f64; 3]],
-    contacts: &Contacts,
-    sums: &[[f64; 3]],
-    rebuild_pos: &[[f64; 2]],
-    margin_m: &[f64],
-    drive: Drive<'_>,
-    p: MotionParams,
-    partial: &mut [MotionReport],
-    parallel: bool,
-) {
+pub fn advance(parts: MotionParts, m: Motion<'_>) {
     macro_rules! arms {
         ($($f:literal $d:literal $x:literal),*) => {
             match (parts.frame, parts.damped, parts.external) {
-                $(($f, $d, $x) => advance_with::<$f, $d, $x>(el, pos, vel, force, contacts, sums, rebuild_pos, margin_m, drive, p, partial, parallel),)*
+                $(($f, $d, $x) => advance_with::<$f, $d, $x>(m),)*
             }
         };
     }
@@ -203,21 +215,8 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
     &a[base..base + n]
 }
 
-#[allow(clippy::too_many_arguments)]
-fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(
-    el: &Elements,
-    pos: &mut [[f64; 3]],
-    vel: &mut [[f64; 3]],
-    force: &mut [[f64; 3]],
-    contacts: &Contacts,
-    sums: &[[f64; 3]],
-    rebuild_pos: &[[f64; 2]],
-    margin_m: &[f64],
-    drive: Drive<'_>,
-    p: MotionParams,
-    partial: &mut [MotionReport],
-    parallel: bool,
-) {
+fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
+    let Motion { el, pos, vel, force, contacts, sums, rebuild_pos, margin_m, drive, p, partial, parallel } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;

@@ -221,7 +221,21 @@ impl Model {
             damped: p.alpha_per_s != 0.0,
             external: p.gravity_mps2 != [0.0, 0.0] || !self.loads.is_empty(),
         };
-        integrate::advance(parts, el, &mut st.pos, &mut st.vel, &mut st.force, &st.contacts, &s.contact_sums, &st.rebuild_pos, &st.margin_m, drive, p, &mut s.motion_partial, parallel);
+        let motion = integrate::Motion {
+            el,
+            pos: &mut st.pos,
+            vel: &mut st.vel,
+            force: &mut st.force,
+            contacts: &st.contacts,
+            sums: &s.contact_sums,
+            rebuild_pos: &st.rebuild_pos,
+            margin_m: &st.margin_m,
+            drive,
+            p,
+            partial: &mut s.motion_partial,
+            parallel,
+        };
+        integrate::advance(parts, motion);
         let mut total = MotionReport::default();
         for r in &s.motion_partial {
             total.merge(r);
