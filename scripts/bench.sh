@@ -4,7 +4,8 @@
 #      `demsweep bench --laws`: the block with each optional law on and off beside the simple
 #      kernel (linear springs, central differences), and the bytes per element and per contact;
 #   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
-#      one thread): steps, Δt, wall, element-steps per second, peak RSS;
+#      one thread): steps, Δt, wall, element-steps per second, peak RSS; each run followed by two
+#      at once (one per core), whose slowdown bounds any two-thread sweep's efficiency;
 #   3. with FULL=1: the default ballistic sweep on 1 and on 2 threads and the parallel efficiency
 #      (about 40 minutes on this machine);
 #   4. with FULL=1: `converge --mesh 3 --case penetration` cost per level and the exponent of
@@ -24,23 +25,19 @@ echo
 "$bin" bench --laws --steps 300 --repeats "$((repeats > 5 ? repeats : 5))"
 
 echo
-echo "== 2. one full-resolution penetration event at 500 ft/s, one thread"
-printf '%-4s %8s %12s %9s %16s %12s\n' run steps dt_s wall_s elem_steps_per_s peak_rss_mb
+echo "== 2. one full-resolution penetration event at 500 ft/s, one thread, each run followed by two"
+echo "      such runs at once, one per core (interleaved: what a sweep on two threads asks of the machine)"
+printf '%-4s %8s %12s %9s %16s %12s %16s\n' run steps dt_s wall_s elem_steps_per_s peak_rss_mb paired_wall_s
 for k in $(seq 1 "$repeats"); do
     RAYON_NUM_THREADS=1 /usr/bin/time -f '%M' -o "$work/rss-$k" "$bin" run sweeps/penetration.toml --quiet --out "$work/event-$k" > /dev/null 2>&1
-    s="$work/event-$k/penetration/summary.csv"
-    printf '%-4s %8s %12.4e %9.2f %16.3e %12.1f\n' "$k" "$(col "$s" steps)" "$(col "$s" dt_s)" "$(col "$s" wall_s)" "$(col "$s" element_steps_per_s)" "$(echo "$(cat "$work/rss-$k") / 1024" | bc -l)"
-done
-
-echo
-echo "== 2b. the same event alone and two at a time, one per core, interleaved (what a sweep on two threads asks of the machine)"
-for k in $(seq 1 "$repeats"); do
-    RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/alone-$k" > /dev/null 2>&1
-    col "$work/alone-$k/penetration/summary.csv" wall_s >> "$work/alone-walls"
     RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-a-$k" > /dev/null 2>&1 &
     RAYON_NUM_THREADS=1 "$bin" run sweeps/penetration.toml --quiet --out "$work/pair-b-$k" > /dev/null 2>&1
     wait
+    s="$work/event-$k/penetration/summary.csv"
+    col "$s" wall_s >> "$work/alone-walls"
     for x in a b; do col "$work/pair-$x-$k/penetration/summary.csv" wall_s >> "$work/pair-walls"; done
+    printf '%-4s %8s %12.4e %9.2f %16.3e %12.1f %16s\n' "$k" "$(col "$s" steps)" "$(col "$s" dt_s)" "$(col "$s" wall_s)" "$(col "$s" element_steps_per_s)" \
+        "$(echo "$(cat "$work/rss-$k") / 1024" | bc -l)" "$(tail -n 2 "$work/pair-walls" | paste -sd/)"
 done
 python3 - "$work/alone-walls" "$work/pair-walls" <<'PY'
 import statistics, sys
@@ -48,7 +45,7 @@ alone = [float(x) for x in open(sys.argv[1])]
 pair = [float(x) for x in open(sys.argv[2])]
 a, p = statistics.median(alone), statistics.median(pair)
 print(f"alone: median {a:.2f} s of {len(alone)}; two at once: median {p:.2f} s of {len(pair)}; slowdown {p / a:.3f}")
-print(f"=> ceiling on the parallel efficiency of any two-thread sweep of such runs: {100 * a / p:.0f} %")
+print(f"=> ceiling the machine puts on the parallel efficiency of a two-thread sweep of such runs: {min(100.0, 100 * a / p):.0f} %")
 PY
 
 if [ "${FULL:-0}" = 1 ]; then

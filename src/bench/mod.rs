@@ -302,11 +302,14 @@ pub fn footprint(model: &Model) -> (f64, f64) {
     let constants = el.radius.len() * 5 * size_of::<f64>()
         + el.prescribed.len()
         + (el.kind.len() + el.body.len() + el.motion.len() + el.load.len()) * size_of::<u16>()
-        + el.initial.len() * 16
-        + el.initial_velocity.len() * 24;
+        + el.initial.len() * size_of::<[f64; 2]>()
+        + el.initial_velocity.len() * size_of::<[f64; 3]>();
     let st = &model.state;
-    let state = (st.pos.len() + st.vel.len() + st.force.len()) * 24 + st.rebuild_pos.len() * 16 + st.margin_m.len() * 8;
-    let per_element = (constants + state) as f64 / n as f64 + size_of::<u32>() as f64 + 24.0;
+    let state = (st.pos.len() + st.vel.len() + st.force.len()) * size_of::<[f64; 3]>()
+        + st.rebuild_pos.len() * size_of::<[f64; 2]>()
+        + st.margin_m.len() * size_of::<f64>();
+    // The adjacency's row start and stage 1's one-thread force sum.
+    let per_element = (constants + state) as f64 / n as f64 + (size_of::<u32>() + size_of::<[f64; 3]>()) as f64;
     let cs = &st.contacts;
     let per_contact = size_of::<Contact>() as f64
         + if cs.extra.is_empty() { 0.0 } else { size_of::<Extra>() as f64 }

@@ -160,7 +160,8 @@ pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity:
 /// forces cost nothing in a scene without them.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct MotionParts {
-    /// The mass-proportional damping acts relative to each body's rigid motion.
+    /// The mass-proportional damping acts relative to each body's rigid motion (only with
+    /// `damped`: without damping there is nothing for the frame to serve).
     pub frame: bool,
     /// α > 0.
     pub damped: bool,
@@ -209,6 +210,15 @@ pub fn advance(parts: MotionParts, m: Motion<'_>) {
         };
     }
     arms!(false false false, false false true, false true false, false true true, true false false, true false true, true true false, true true true)
+}
+
+/// |v|² + (|ω| r)² above `limit2` (m²/s²), or not finite (NaN fails every comparison: the
+/// negated `<=` catches it).
+#[inline(always)]
+#[allow(clippy::neg_cmp_op_on_partial_ord)]
+fn too_fast(v: [f64; 3], radius_m: f64, limit2: f64) -> bool {
+    let spin = v[2].abs() * radius_m;
+    !(v[0] * v[0] + v[1] * v[1] + spin * spin <= limit2)
 }
 
 fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
@@ -292,26 +302,13 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             x[0] += p.dt_s * v1[0];
             x[1] += p.dt_s * v1[1];
             x[2] += p.dt_s * v1[2];
-            let spin = v1[2].abs() * radius[o];
-            let speed2 = v1[0] * v1[0] + v1[1] * v1[1] + spin * spin;
-            // NaN fails every comparison: the negated `<=` catches it.
-            #[allow(clippy::neg_cmp_op_on_partial_ord)]
-            let too_fast = !(speed2 <= limit2);
-            bad |= too_fast;
+            bad |= too_fast(v1, radius[o], limit2);
             let (dx, dy) = (x[0] - refs[o][0], x[1] - refs[o][1]);
             drifted |= dx * dx + dy * dy > margin[o] * margin[o];
         }
         r.drifted = drifted;
         if bad {
-            r.first_bad = base
-                + vs.iter().zip(radius).position(|(v, r)| {
-                    let spin = v[2].abs() * r;
-                    let speed2 = v[0] * v[0] + v[1] * v[1] + spin * spin;
-                    #[allow(clippy::neg_cmp_op_on_partial_ord)]
-                    let too_fast = !(speed2 <= limit2);
-                    too_fast
-                })
-                .expect("an element was too fast");
+            r.first_bad = base + vs.iter().zip(radius).position(|(&v, &r)| too_fast(v, r, limit2)).expect("an element was too fast");
         }
         r
     };

@@ -209,18 +209,13 @@ impl Model {
     /// Returns whether some element drifted past its neighbour margin.
     fn move_elements(&mut self) -> Result<bool> {
         self.update_drive();
-        let parallel = self.parallel();
+        let (parallel, parts) = (self.parallel(), self.motion_parts());
         let s = &mut self.scratch;
         let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
         s.motion_partial.resize(n_chunks, MotionReport::default());
         let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
         let st = &mut self.state;
         let (el, p) = (&self.el, self.motion);
-        let parts = integrate::MotionParts {
-            frame: self.damp_relative_to_rigid,
-            damped: p.alpha_per_s != 0.0,
-            external: p.gravity_mps2 != [0.0, 0.0] || !self.loads.is_empty(),
-        };
         let motion = integrate::Motion {
             el,
             pos: &mut st.pos,
@@ -259,10 +254,22 @@ impl Model {
         Ok(total.drifted)
     }
 
+    /// What the motion stage does for this model (fixed when built).
+    fn motion_parts(&self) -> integrate::MotionParts {
+        let p = &self.motion;
+        let damped = p.alpha_per_s != 0.0;
+        integrate::MotionParts {
+            frame: damped && self.damp_relative_to_rigid,
+            damped,
+            external: p.gravity_mps2 != [0.0, 0.0] || !self.loads.is_empty(),
+        }
+    }
+
     /// Loads at t, prescribed velocities at t + Δt/2 (the midpoint rule moves a kinematic
     /// element exactly along a prescribed velocity that is linear over the step).
     fn update_drive(&mut self) {
         let (t, half) = (self.time_s(), self.time_s() + 0.5 * self.motion.dt_s);
+        let frame = self.motion_parts().frame;
         let s = &mut self.scratch;
         let (el, st) = (&self.el, &self.state);
         s.load_now.clear();
@@ -294,7 +301,7 @@ impl Model {
             let f = g.profile.at(half);
             [g.velocity[0] * f, g.velocity[1] * f, g.velocity[2] * f]
         }));
-        if self.damp_relative_to_rigid {
+        if frame {
             integrate::rigid_frames(el, &st.pos, &st.vel, self.bodies.len(), &mut s.frame_now, &mut s.frame_scratch);
         }
     }
