@@ -46,6 +46,8 @@ pub struct Finished {
 pub struct Hooks<'a> {
     /// Where the steps run.
     pub threading: Threading,
+    /// Idle cores to borrow (see [`run::Options::lend`]).
+    pub lend: Option<&'a dyn run::Lend>,
     /// Called at every record with the model (pictures).
     pub each_record: Option<run::Observer<'a>>,
     /// Simulated time between records, s (0: only the start and the end).
@@ -68,7 +70,7 @@ pub fn run(scene: &PenetrationScene, hooks: Hooks<'_>) -> Result<Finished> {
         // Reborrowed for the run (the callbacks' trait objects shortened to the run's borrow).
         let observe = on.as_mut().map(|f| &mut **f as run::Observer<'_>);
         let tick = tick.as_mut().map(|f| &mut **f as &mut dyn FnMut(f64));
-        let options = run::Options { threading: hooks.threading, stop: Some(&mut detector), tick, observe, ..Default::default() };
+        let options = run::Options { threading: hooks.threading, lend: hooks.lend, stop: Some(&mut detector), tick, observe, ..Default::default() };
         run::run_with(built, options)?
     };
     let outcome = detector.outcome(&result.model);

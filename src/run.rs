@@ -195,11 +195,25 @@ pub struct Checkpointing<'a> {
 /// Called with the model at each record; an error stops the run.
 pub type Observer<'a> = &'a mut dyn FnMut(&Model) -> Result<()>;
 
+/// Cores a run may borrow while they are idle (a sweep's, `sweep::share`).
+pub trait Lend: Sync {
+    /// True when a core has nothing to do.
+    fn spare(&self) -> bool;
+    /// The pool to step on while a core is spare.
+    fn pool(&self) -> &rayon::ThreadPool;
+}
+
+/// Steps between two looks at [`Lend::spare`] (an atomic load or two).
+pub const LEND_POLL_STEPS: u64 = 10;
+
 /// How to run.
 #[derive(Default)]
 pub struct Options<'a> {
     /// Where the steps run.
     pub threading: Threading,
+    /// Idle cores to borrow: while one is spare the run steps on [`Lend::pool`] (the kernel's
+    /// results do not depend on it), otherwise as `threading` says.
+    pub lend: Option<&'a dyn Lend>,
     /// Continue from this checkpoint of the same scene.
     pub resume: Option<&'a RunCheckpoint>,
     /// Hand out checkpoints.
@@ -254,8 +268,17 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
     let start = Instant::now();
     let first_step = m.steps();
     let mut end_reason = if opts.stop.is_some() { "time_cap".to_string() } else { "duration".to_string() };
+    let own = opts.threading;
+    let mut borrowed = false;
     for s in m.steps() + 1..=cap {
-        m.step()?;
+        if let Some(l) = opts.lend.filter(|_| (s - 1).is_multiple_of(LEND_POLL_STEPS)) {
+            borrowed = l.spare();
+            m.threading = if borrowed { Threading::Pool } else { own };
+        }
+        match opts.lend {
+            Some(l) if borrowed => l.pool().install(|| m.step())?,
+            _ => m.step()?,
+        }
         let settled = match opts.stop.as_deref_mut() {
             Some(stop) if s % stop.every_steps().max(1) == 0 => stop.check(m),
             _ => None,

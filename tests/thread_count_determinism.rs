@@ -41,3 +41,42 @@ fn a_run_told_to_step_serially_gives_the_same_bits_inside_any_pool() {
     });
     assert!(serial == pooled, "a serial run differs from a pooled one");
 }
+
+/// Lends its pool on every other look: a run that borrows it switches between stepping alone
+/// and stepping on the pool every `LEND_POLL_STEPS` steps.
+struct Flicker {
+    pool: rayon::ThreadPool,
+    looks: std::sync::atomic::AtomicUsize,
+    lent: std::sync::atomic::AtomicUsize,
+}
+
+impl demsweep::run::Lend for Flicker {
+    fn spare(&self) -> bool {
+        let spare = self.looks.fetch_add(1, std::sync::atomic::Ordering::SeqCst).is_multiple_of(2);
+        self.lent.fetch_add(spare as usize, std::sync::atomic::Ordering::SeqCst);
+        spare
+    }
+    fn pool(&self) -> &rayon::ThreadPool {
+        &self.pool
+    }
+}
+
+#[test]
+fn a_run_that_borrows_idle_cores_now_and_then_gives_the_bits_of_a_serial_run() {
+    // A sweep's last runs step on the cores the others left idle (sweep::share), switching
+    // whenever a core frees or is taken again.
+    use demsweep::kernel::Threading;
+    use demsweep::run::{self, Options};
+    let built = || {
+        let model = common::impact::model();
+        let duration_s = 400.0 * model.dt_s();
+        demsweep::scene::Built { name: "impact".into(), model, probes: Vec::new(), duration_s, every_steps: 100 }
+    };
+    let serial = run::run_with(built(), Options { threading: Threading::Serial, ..Default::default() }).unwrap();
+    let lend = Flicker { pool: rayon::ThreadPoolBuilder::new().num_threads(2).build().unwrap(), looks: Default::default(), lent: Default::default() };
+    let borrowing = run::run_with(built(), Options { threading: Threading::Serial, lend: Some(&lend), ..Default::default() }).unwrap();
+    let lent = lend.lent.load(std::sync::atomic::Ordering::SeqCst);
+    assert!(lent >= 15, "the pool was lent {lent} times");
+    assert!(serial.model.state.ledger.bonds_broken() > 0, "the scene must break bonds in 400 steps");
+    assert!(common::impact::state_bits(&serial.model) == common::impact::state_bits(&borrowing.model), "borrowing cores changed the result");
+}

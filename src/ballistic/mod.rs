@@ -150,7 +150,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
     };
     let mut store = Store::open(&plan.out, &base, plan.fresh)?;
     write_atomic(&plan.out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
-    let engine = Engine { base: &base, threads: plan.threads, quiet: plan.quiet };
+    let engine = Engine::new(&base, plan.threads, plan.quiet);
     let jobs: Vec<Job> = grid
         .iter()
         .enumerate()
@@ -317,6 +317,6 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
     if !bisect {
         return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran: 0, skipped: store.len() });
     }
-    let engine = Engine { base: &base, threads, quiet };
+    let engine = Engine::new(&base, threads, quiet);
     bisect_and_report(&engine, &mut store, &grid, first.tol_fps, out)
 }

@@ -41,7 +41,7 @@ pub fn run(args: Args) -> Result<()> {
     };
     let base = Base::load(&args.scene)?;
     let mut store = Store::open(&args.out, &base, args.fresh)?;
-    let engine = Engine { base: &base, threads: args.threads, quiet: args.quiet };
+    let engine = Engine::new(&base, args.threads, args.quiet);
     let done = engine.run(&jobs, &mut store)?;
     eprintln!("{} runs made, {} found done; {} in {}", done.ran, done.skipped, store.len(), Store::csv_path(&args.out).display());
     done.check().map_err(|e| match e {

@@ -235,7 +235,7 @@ fn penetration(plan: &Plan) -> Result<Vec<Level>> {
         .collect();
     let dir = plan.out.join("penetration_runs");
     let mut store = Store::open(&dir, &base, false)?;
-    let engine = Engine { base: &base, threads: plan.threads, quiet: plan.quiet };
+    let engine = Engine::new(&base, plan.threads, plan.quiet);
     engine.run(&jobs, &mut store)?.check()?;
     jobs.iter()
         .enumerate()

@@ -1,11 +1,13 @@
 //! Running a set of jobs: each run one rayon task on one thread (the kernel in
-//! `Threading::Serial`, so a sweep of N runs on N threads never oversubscribes), every finished
+//! `Threading::Serial`, so a sweep of N runs on N threads never oversubscribes; the last runs
+//! borrow the cores the others left idle, [`super::share`]), every finished
 //! run sent over a crossbeam channel to one writer, which adds it to the [`Store`] and rewrites
 //! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
 //! others go on.
 
 use super::job::{Base, Job, run_job};
 use super::progress::Progress;
+use super::share::Cores;
 use super::store::Store;
 use crate::error::{Error, Result};
 
@@ -17,6 +19,8 @@ pub struct Engine<'a> {
     pub threads: usize,
     /// No progress display.
     pub quiet: bool,
+    /// What its threads are doing (runs borrow the idle ones).
+    cores: Cores,
 }
 
 /// What a call to [`Engine::run`] did.
@@ -28,6 +32,13 @@ pub struct Finished {
     pub skipped: usize,
     /// Runs that failed: (run id, message).
     pub failed: Vec<(String, String)>,
+}
+
+impl<'a> Engine<'a> {
+    /// An engine of `threads` threads (0: one per core) for `base`.
+    pub fn new(base: &'a Base, threads: usize, quiet: bool) -> Engine<'a> {
+        Engine { base, threads, quiet, cores: Cores::new(threads) }
+    }
 }
 
 impl Engine<'_> {
@@ -52,6 +63,8 @@ impl Engine<'_> {
         let mut progress = Progress::new(todo.len() + skipped, skipped, self.quiet);
         let level = self.base.level();
         let pool = self.pool()?;
+        self.cores.prepare()?;
+        self.cores.queue(todo.len());
         let mut failed = Vec::new();
         let written: Result<()> = std::thread::scope(|s| {
             let (tx, rx) = crossbeam_channel::unbounded::<(&Job, Result<Vec<(String, String)>>)>();
@@ -78,7 +91,10 @@ impl Engine<'_> {
             pool.install(|| {
                 use rayon::prelude::*;
                 todo.par_iter().for_each_with(tx, |tx, job| {
-                    let r = run_job(self.base, job);
+                    let r = {
+                        let _busy = self.cores.start(true);
+                        run_job(self.base, job, Some(&self.cores))
+                    };
                     let _ = tx.send((job, r));
                 });
             });
@@ -109,7 +125,12 @@ impl Engine<'_> {
             }
         }
         let t0 = std::time::Instant::now();
-        let row = run_job(self.base, job).map_err(|e| Error::input("sweep", format!("run {} failed: {e}", job.id())))?;
+        self.cores.prepare()?;
+        let row = {
+            let _busy = self.cores.start(false);
+            run_job(self.base, job, Some(&self.cores))
+        }
+        .map_err(|e| Error::input("sweep", format!("run {} failed: {e}", job.id())))?;
         if !self.quiet {
             eprintln!("[{}] {}: {}  ({:.1} s)", job.purpose, job.id(), super::progress::outcome(&row), t0.elapsed().as_secs_f64());
         }

@@ -4,6 +4,7 @@ use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 use crate::kernel::Threading;
+use crate::run::Lend;
 use crate::scene::{SceneFile, load_text, overrides::Override};
 
 /// The scene a sweep varies, read once.
@@ -65,18 +66,19 @@ impl Job {
     }
 }
 
-/// Run `job` on the calling thread; the row is the run's summary row, as (column, text).
-pub fn run_job(base: &Base, job: &Job) -> Result<Vec<(String, String)>> {
+/// Run `job` on the calling thread, borrowing `lend`'s cores while they are idle; the row is
+/// the run's summary row, as (column, text).
+pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Vec<(String, String)>> {
     match load_text(&base.text, &base.path, &job.overrides)? {
         SceneFile::Penetration(scene) => {
-            let hooks = crate::penetration::Hooks { threading: Threading::Serial, ..Default::default() };
+            let hooks = crate::penetration::Hooks { threading: Threading::Serial, lend, ..Default::default() };
             let row = crate::penetration::run(&scene, hooks)?.row;
             let cells = crate::table::row::cells(&row).map_err(|e| Error::input("<row>", e))?;
             Ok(cells.into_iter().map(|(k, v)| (k, v.text())).collect())
         }
         SceneFile::Kernel(scene) => {
             let built = scene.build().map_err(|e| e.in_file(&base.path))?;
-            let options = crate::run::Options { threading: Threading::Serial, ..Default::default() };
+            let options = crate::run::Options { threading: Threading::Serial, lend, ..Default::default() };
             let t = crate::run::run_with(built, options)?.summary_table();
             Ok(t.header.into_iter().zip(t.rows.into_iter().next().unwrap_or_default()).collect())
         }

@@ -14,6 +14,7 @@ pub mod job;
 pub mod parquet;
 pub mod plan;
 pub mod progress;
+pub mod share;
 pub mod store;
 
 pub use engine::{Engine, Finished};
