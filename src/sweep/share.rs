@@ -17,9 +17,12 @@ use crate::run::Lend;
 
 /// The engine's count of its cores' work.
 pub struct Cores {
+    // Configuration: the engine's threads.
     threads: usize,
+    // What evolves: runs in progress, and grid runs not yet started.
     busy: AtomicUsize,
     unstarted: AtomicUsize,
+    // Built once, on the first sweep of more than one thread.
     pool: std::sync::OnceLock<rayon::ThreadPool>,
 }
 
