@@ -269,15 +269,18 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
     let first_step = m.steps();
     let mut end_reason = if opts.stop.is_some() { "time_cap".to_string() } else { "duration".to_string() };
     let own = opts.threading;
-    let mut borrowed = false;
+    // The lender's pool while a core is spare (looked at every LEND_POLL_STEPS steps).
+    let mut borrowed: Option<&rayon::ThreadPool> = None;
     for s in m.steps() + 1..=cap {
-        if let Some(l) = opts.lend.filter(|_| (s - 1).is_multiple_of(LEND_POLL_STEPS)) {
-            borrowed = l.spare();
-            m.threading = if borrowed { Threading::Pool } else { own };
+        if let Some(l) = opts.lend
+            && (s - 1).is_multiple_of(LEND_POLL_STEPS)
+        {
+            borrowed = l.spare().then(|| l.pool());
+            m.threading = if borrowed.is_some() { Threading::Pool } else { own };
         }
-        match opts.lend {
-            Some(l) if borrowed => l.pool().install(|| m.step())?,
-            _ => m.step()?,
+        match borrowed {
+            Some(pool) => pool.install(|| m.step())?,
+            None => m.step()?,
         }
         let settled = match opts.stop.as_deref_mut() {
             Some(stop) if s % stop.every_steps().max(1) == 0 => stop.check(m),

@@ -210,8 +210,7 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], t
     // Plain threads, not rayon tasks: a rayon worker that waits (polars writing the Parquet
     // table uses its own pool) steals other tasks of its pool, and would start the other
     // bisection inside this one's lock on the table.
-    let threads = if engine.threads == 0 { std::thread::available_parallelism().map_or(1, |n| n.get()) } else { engine.threads };
-    let (s, p) = if threads >= 2 {
+    let (s, p) = if engine.thread_count() >= 2 {
         std::thread::scope(|sc| {
             let scab = sc.spawn(|| bisect("scabbed", "bisect scabbing"));
             let perf = bisect("perforated", "bisect perforation");

@@ -35,9 +35,15 @@ pub struct Finished {
 }
 
 impl<'a> Engine<'a> {
-    /// An engine of `threads` threads (0: one per core) for `base`.
+    /// An engine of `threads` threads (0: rayon's default, one per core unless
+    /// RAYON_NUM_THREADS says otherwise) for `base`.
     pub fn new(base: &'a Base, threads: usize, quiet: bool) -> Engine<'a> {
         Engine { base, threads, quiet, cores: Cores::new(threads) }
+    }
+
+    /// The threads it runs on: `threads`, or rayon's default for 0.
+    pub fn thread_count(&self) -> usize {
+        self.cores.threads()
     }
 }
 

@@ -33,6 +33,11 @@ impl Cores {
         Cores { threads, busy: AtomicUsize::new(0), unstarted: AtomicUsize::new(0), pool: std::sync::OnceLock::new() }
     }
 
+    /// The engine's threads.
+    pub fn threads(&self) -> usize {
+        self.threads
+    }
+
     /// `n` grid runs are queued (none of them started).
     pub fn queue(&self, n: usize) {
         self.unstarted.store(n, Ordering::SeqCst);
