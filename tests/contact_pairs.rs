@@ -97,6 +97,7 @@ fn coulomb_sliding_caps_the_shear_force() {
     );
     b.alpha_per_s = 2000.0;
     let mut model = b.build().unwrap();
+    model.record_contact_forces = true;
     let mut slid = 0;
     for _ in 0..10_000 {
         // The contact force of a step is computed at the positions the step starts from.
@@ -232,6 +233,7 @@ fn seed_steel_sliding_on_concrete_is_resisted_by_mu_fn() {
     );
     b.alpha_per_s = 2000.0;
     let mut model = b.build().unwrap();
+    model.record_contact_forces = true;
     let k = &model.classes[model.state.contacts.list.first().map_or(1, |c| c.class as usize)];
     assert!(k.contact.springs.kt_n_per_m > 0.0, "steel–concrete contacts must have a tangential spring");
     let (mut sliding, mut worst) = (0, 0.0f64);

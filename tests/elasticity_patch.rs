@@ -34,6 +34,7 @@ fn relaxed_patch(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_
     let c = (e / 2400.0).sqrt();
     b.alpha_per_s = std::f64::consts::PI * c / w;
     let mut model = b.build().unwrap();
+    model.record_contact_forces = true;
     let steps = (60.0 * w / c / model.dt_s()) as u64;
     model.run_steps(steps).unwrap();
     let interior: Vec<usize> = (0..n)

@@ -80,3 +80,28 @@ fn a_run_that_borrows_idle_cores_now_and_then_gives_the_bits_of_a_serial_run() {
     assert!(serial.model.state.ledger.bonds_broken() > 0, "the scene must break bonds in 400 steps");
     assert!(common::impact::state_bits(&serial.model) == common::impact::state_bits(&borrowing.model), "borrowing cores changed the result");
 }
+
+#[test]
+fn recording_contact_forces_on_one_thread_changes_no_bit_and_gives_the_forces_the_parallel_stages_gather() {
+    // On one thread the contact stage sums the forces into the elements and keeps no
+    // per-contact copy unless asked: asking must change nothing else, and the copy must be
+    // what the parallel stages write (and gather from).
+    let run = |threads: usize, record: bool| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| {
+            let mut m = common::impact::model();
+            m.record_contact_forces = record;
+            m.parallel_min_contacts = 0;
+            m.run_steps(400).unwrap();
+            let forces: Vec<u64> = m.state.contacts.force.iter().flat_map(|f| [f.fx, f.fy, f.ti, f.tj]).map(f64::to_bits).collect();
+            (common::impact::state_bits(&m), forces)
+        })
+    };
+    let (plain, _) = run(1, false);
+    let (recorded, forces_serial) = run(1, true);
+    let (parallel, forces_parallel) = run(2, false);
+    assert!(plain == recorded, "recording the contact forces changed the state");
+    assert!(plain == parallel, "two threads differ from one");
+    assert!(forces_serial.iter().any(|&b| b != 0), "no contact carried a force");
+    assert!(forces_serial == forces_parallel, "the recorded forces differ from the parallel stages'");
+}

@@ -350,6 +350,7 @@ impl ModelBuilder {
             },
             threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
+            record_contact_forces: false,
             state,
             scratch: Default::default(),
         };

@@ -75,7 +75,8 @@ pub struct Contacts {
     pub list: Vec<Contact>,
     /// The optional parts' state, parallel to `list` (empty when no part needs it).
     pub extra: Vec<Extra>,
-    /// Forces of the last step, parallel to `list`.
+    /// Forces of the last step, parallel to `list`: written by the parallel stages always, on
+    /// one thread only with `Model::record_contact_forces` (else they are stale).
     pub force: Vec<ContactForce>,
     /// CSR row starts: element e's entries are `adj[start[e]..start[e+1]]` (derived from `list`).
     #[serde(skip)]

@@ -36,15 +36,17 @@ pub struct Stage<'a> {
     pub dt_s: f64,
     /// One entry per chunk (output).
     pub partial: &'a mut [Dissipation],
-    /// With one thread: per-element force sums [Fx N, Fy N, T N·m], zeroed on entry.
+    /// With one thread: per-element force sums [Fx N, Fy N, T N·m], zero on entry.
     pub sums: Option<&'a mut [[f64; 3]]>,
+    /// Store each contact's force in `force` (always done without `sums`).
+    pub record: bool,
 }
 
 impl law::PartsVisitor for Stage<'_> {
     type Output = ();
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums } = self;
-        process::<P>(pos, vel, list, extra, force, classes, dt_s, partial, sums)
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums, record } = self;
+        process::<P>(pos, vel, list, extra, force, classes, dt_s, partial, sums, record)
     }
 }
 
@@ -74,7 +76,8 @@ fn chunk<P: PartSet>(
     }
 }
 
-/// Compute all contact forces.
+/// Compute all contact forces: into `force` without `sums`; with them, summed into the
+/// elements, and into `force` too when `record`.
 #[inline(never)]
 #[allow(clippy::too_many_arguments)]
 pub fn process<P: PartSet>(
@@ -87,6 +90,7 @@ pub fn process<P: PartSet>(
     dt_s: f64,
     partial: &mut [Dissipation],
     sums: Option<&mut [[f64; 3]]>,
+    record: bool,
 ) {
     match sums {
         None => {
@@ -114,7 +118,9 @@ pub fn process<P: PartSet>(
                     let c = &mut list[k];
                     let x = if P::EXTRA { &mut extra[k] } else { &mut scratch };
                     let cf = one::<P>(pos, vel, c, x, classes, dt_s, d);
-                    force[k] = cf;
+                    if record {
+                        force[k] = cf;
+                    }
                     if c.i != run_i {
                         if run_i != u32::MAX {
                             sums[run_i as usize] = acc;

@@ -114,12 +114,12 @@ pub fn rigid_frames(el: &Elements, pos: &[[f64; 3]], vel: &[[f64; 3]], bodies: u
 }
 
 /// Generalised force on element `e` from its contacts, its load group and gravity, and the
-/// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts are summed in
-/// the adjacency's fixed order.
+/// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts' sum is
+/// `summed` when stage 1 made it, else gathered here in the adjacency's fixed order.
 #[inline(always)]
-fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, sums: &[[f64; 3]], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
-    let [fx, fy, tz] = match sums.get(e) {
-        Some(&summed) => summed,
+fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, summed: Option<[f64; 3]>, mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
+    let [fx, fy, tz] = match summed {
+        Some(summed) => summed,
         None => {
             let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
             let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
@@ -152,7 +152,7 @@ fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, sums: &[[f64
 
 /// Forces of every element for the current contact forces (no motion), as `advance` would see them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    (0..el.len()).map(|e| total_force::<true>(e, contacts, &[], el.mass[e], el.load[e], drive, gravity).0).collect()
+    (0..el.len()).map(|e| total_force::<true>(e, contacts, None, el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
 /// What the motion stage of a model has to do, resolved once per step from its parameters
@@ -181,9 +181,9 @@ pub struct Motion<'a> {
     pub force: &'a mut [[f64; 3]],
     /// Contacts, with their forces and adjacency for the gather.
     pub contacts: &'a Contacts,
-    /// The contact forces already summed per element by stage 1 (one thread), or empty to
-    /// gather them here over the adjacency.
-    pub sums: &'a [[f64; 3]],
+    /// The contact forces already summed per element by stage 1 (one thread; zeroed here as
+    /// they are read, ready for the next step), or empty to gather them over the adjacency.
+    pub sums: &'a mut [[f64; 3]],
     /// Positions at the last neighbour update, m.
     pub rebuild_pos: &'a [[f64; 2]],
     /// Neighbour margins, m.
@@ -230,7 +230,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
-    let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]]| -> MotionReport {
+    let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]], ss: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
         // The chunk's slices of every per-element array, all of its length: no bounds checks
         // in the loop.
@@ -249,7 +249,8 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         let (mut bad, mut drifted) = (false, false);
         for o in 0..n {
             let (e, x) = (base + o, &mut ps[o]);
-            let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(e, contacts, sums, mass[o], load[o], drive, p.gravity_mps2);
+            let summed = ss.get_mut(o).map(std::mem::take);
+            let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(e, contacts, summed, mass[o], load[o], drive, p.gravity_mps2);
             fs[o] = [fx, fy, tz];
             let v0 = vs[o];
             let v1 = if motion[o] != 0 {
@@ -313,17 +314,23 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         r
     };
     if parallel {
+        debug_assert!(sums.is_empty(), "the parallel stages gather");
         pos.par_chunks_mut(CHUNK)
             .zip(vel.par_chunks_mut(CHUNK))
             .zip(force.par_chunks_mut(CHUNK))
             .zip(partial.par_iter_mut())
             .enumerate()
-            .for_each(|(k, (((ps, vs), fs), out))| *out = run(k, ps, vs, fs));
+            .for_each(|(k, (((ps, vs), fs), out))| *out = run(k, ps, vs, fs, &mut []));
     } else {
+        let mut sums = sums;
         for (k, (((ps, vs), fs), out)) in
             pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).enumerate()
         {
-            *out = run(k, ps, vs, fs);
+            // This chunk's sums, or none (a gather) when stage 1 made none.
+            let take = if sums.is_empty() { 0 } else { ps.len() };
+            let (ss, rest) = std::mem::take(&mut sums).split_at_mut(take);
+            sums = rest;
+            *out = run(k, ps, vs, fs, ss);
         }
     }
 }

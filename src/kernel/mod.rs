@@ -92,7 +92,8 @@ struct Scratch {
     motion_now: Vec<[f64; 3]>,
     frame_now: Vec<[f64; 5]>,
     frame_scratch: Vec<[f64; 5]>,
-    /// Per-element contact force sums of stage 1 when it runs on one thread (else empty).
+    /// Per-element contact force sums of stage 1 when it runs on one thread: zero between
+    /// steps (the motion stage zeroes each entry as it reads it, sparing a pass that clears them).
     contact_sums: Vec<[f64; 3]>,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
@@ -127,6 +128,12 @@ pub struct Model {
     pub threading: Threading,
     /// Contacts from which the stages run on rayon's pool (see [`PARALLEL_MIN_CONTACTS`]).
     pub parallel_min_contacts: usize,
+    /// Keep each contact's force of the last step in `state.contacts.force` on one thread too
+    /// (an observable: the virial stress, a single contact's law). The parallel stages always
+    /// write them, since their motion stage gathers from them; on one thread the contact stage
+    /// adds each force to its two elements as it goes and, without this, stores no copy (the
+    /// copy was 1.3 MB written per step on the peers' beam, about a tenth of its step).
+    pub record_contact_forces: bool,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
@@ -157,8 +164,9 @@ impl Model {
     /// Advance one step. On blow-up the error names the step and the element; the state is
     /// then unusable (the caller must not write it out).
     pub fn step(&mut self) -> Result<()> {
-        self.process_contacts();
-        let drifted = self.move_elements()?;
+        let parallel = self.parallel();
+        self.process_contacts(parallel);
+        let drifted = self.move_elements(parallel)?;
         self.detect_contacts(drifted);
         self.state.steps += 1;
         Ok(())
@@ -178,14 +186,12 @@ impl Model {
             && rayon::current_num_threads() > 1
     }
 
-    fn process_contacts(&mut self) {
-        let parallel = self.parallel();
+    fn process_contacts(&mut self, parallel: bool) {
         let s = &mut self.scratch;
         let n_chunks = self.state.contacts.len().div_ceil(forces::CHUNK);
         s.diss_partial.resize(n_chunks, Dissipation::default());
-        s.contact_sums.clear();
-        if !parallel {
-            s.contact_sums.resize(self.el.len(), [0.0; 3]);
+        if !parallel && s.contact_sums.len() != self.el.len() {
+            s.contact_sums = vec![[0.0; 3]; self.el.len()];
         }
         let st = &mut self.state;
         let contacts::Contacts { list, extra, force, .. } = &mut st.contacts;
@@ -199,6 +205,7 @@ impl Model {
             dt_s: self.motion.dt_s,
             partial: &mut s.diss_partial,
             sums: if parallel { None } else { Some(&mut s.contact_sums[..]) },
+            record: parallel || self.record_contact_forces,
         };
         self.parts.dispatch(stage);
         for d in &s.diss_partial {
@@ -207,9 +214,9 @@ impl Model {
     }
 
     /// Returns whether some element drifted past its neighbour margin.
-    fn move_elements(&mut self) -> Result<bool> {
+    fn move_elements(&mut self, parallel: bool) -> Result<bool> {
         self.update_drive();
-        let (parallel, parts) = (self.parallel(), self.motion_parts());
+        let parts = self.motion_parts();
         let s = &mut self.scratch;
         let n_chunks = self.el.len().div_ceil(integrate::CHUNK);
         s.motion_partial.resize(n_chunks, MotionReport::default());
@@ -222,7 +229,7 @@ impl Model {
             vel: &mut st.vel,
             force: &mut st.force,
             contacts: &st.contacts,
-            sums: &s.contact_sums,
+            sums: if parallel { &mut [] } else { &mut s.contact_sums[..] },
             rebuild_pos: &st.rebuild_pos,
             margin_m: &st.margin_m,
             drive,
@@ -325,6 +332,7 @@ impl Model {
             dt_s: 0.0,
             partial: &mut partial,
             sums: None,
+            record: true,
         };
         Parts { damping: false, ..self.parts }.dispatch(stage);
         let s = &self.scratch;
