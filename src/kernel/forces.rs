@@ -68,13 +68,13 @@ fn chunk<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], f
 }
 
 /// What every contact of a step reads: the state it starts from and the step.
-pub struct StepInput<'a> {
+struct StepInput<'a> {
     /// Positions [x m, y m, θ rad].
-    pub pos: &'a [[f64; 3]],
+    pos: &'a [[f64; 3]],
     /// Half-step velocities.
-    pub vel: &'a [[f64; 3]],
+    vel: &'a [[f64; 3]],
     /// Δt, s.
-    pub dt_s: f64,
+    dt_s: f64,
 }
 
 /// Compute all contact forces: into `force` without `sums`; with them, summed into the
