@@ -311,6 +311,8 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
             (c.save)(&snapshot)?;
         }
     }
+    // The model handed back steps where the caller said, not where the last borrow left it.
+    m.threading = own;
     let wall = start.elapsed().as_secs_f64();
     let mut header = vec!["time_s".to_string()];
     header.extend(built.probes.iter().map(|p| p.name.clone()));

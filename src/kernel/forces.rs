@@ -107,44 +107,60 @@ pub fn process<P: PartSet>(
                 chunks.for_each(|a| run(a, &mut []));
             }
         }
-        Some(sums) => {
-            // Contacts are sorted by i: keep i's running sum in registers while i repeats.
-            let mut run_i = u32::MAX;
-            let mut acc = [0.0f64; 3];
-            let mut scratch = Extra::new(0.0);
-            let n = list.len();
-            let mut from = 0;
-            for d in partial.iter_mut() {
-                let to = (from + CHUNK).min(n);
-                *d = Dissipation::default();
-                for k in from..to {
-                    let c = &mut list[k];
-                    let x = if P::EXTRA { &mut extra[k] } else { &mut scratch };
-                    let cf = one::<P>(at, c, x, classes, d);
-                    if record {
-                        force[k] = cf;
-                    }
-                    if c.i != run_i {
-                        if run_i != u32::MAX {
-                            sums[run_i as usize] = acc;
-                        }
-                        run_i = c.i;
-                        acc = sums[run_i as usize];
-                    }
-                    acc[0] += cf.fx;
-                    acc[1] += cf.fy;
-                    acc[2] += cf.ti;
-                    let s = &mut sums[c.j as usize];
-                    s[0] -= cf.fx;
-                    s[1] -= cf.fy;
-                    s[2] += cf.tj;
+        // The serial loop compiled with and without the per-contact store: no branch per
+        // contact on an observable the run does not ask for.
+        Some(sums) if record => scatter::<P, true>(at, list, extra, force, classes, partial, sums),
+        Some(sums) => scatter::<P, false>(at, list, extra, force, classes, partial, sums),
+    }
+}
+
+/// One thread: each contact's force added to its two elements as it goes (and stored in
+/// `force` when `RECORD`).
+#[inline(always)]
+fn scatter<P: PartSet, const RECORD: bool>(
+    at: &StepInput<'_>,
+    list: &mut [Contact],
+    extra: &mut [Extra],
+    force: &mut [ContactForce],
+    classes: &[ContactClass],
+    partial: &mut [Dissipation],
+    sums: &mut [[f64; 3]],
+) {
+    // Contacts are sorted by i: keep i's running sum in registers while i repeats.
+    let mut run_i = u32::MAX;
+    let mut acc = [0.0f64; 3];
+    let mut scratch = Extra::new(0.0);
+    let n = list.len();
+    let mut from = 0;
+    for d in partial.iter_mut() {
+        let to = (from + CHUNK).min(n);
+        *d = Dissipation::default();
+        for k in from..to {
+            let c = &mut list[k];
+            let x = if P::EXTRA { &mut extra[k] } else { &mut scratch };
+            let cf = one::<P>(at, c, x, classes, d);
+            if RECORD {
+                force[k] = cf;
+            }
+            if c.i != run_i {
+                if run_i != u32::MAX {
+                    sums[run_i as usize] = acc;
                 }
-                from = to;
+                run_i = c.i;
+                acc = sums[run_i as usize];
             }
-            if run_i != u32::MAX {
-                sums[run_i as usize] = acc;
-            }
+            acc[0] += cf.fx;
+            acc[1] += cf.fy;
+            acc[2] += cf.ti;
+            let s = &mut sums[c.j as usize];
+            s[0] -= cf.fx;
+            s[1] -= cf.fy;
+            s[2] += cf.tj;
         }
+        from = to;
+    }
+    if run_i != u32::MAX {
+        sums[run_i as usize] = acc;
     }
 }
 

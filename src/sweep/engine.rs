@@ -15,11 +15,10 @@ use crate::error::{Error, Result};
 pub struct Engine<'a> {
     /// The scene.
     pub base: &'a Base,
-    /// Threads (0: rayon's default, one per core).
-    pub threads: usize,
     /// No progress display.
     pub quiet: bool,
-    /// What its threads are doing (runs borrow the idle ones).
+    /// Its threads (resolved once, see [`Engine::new`]) and what they are doing (runs borrow
+    /// the idle ones).
     cores: Cores,
 }
 
@@ -38,7 +37,7 @@ impl<'a> Engine<'a> {
     /// An engine of `threads` threads (0: rayon's default, one per core unless
     /// RAYON_NUM_THREADS says otherwise) for `base`.
     pub fn new(base: &'a Base, threads: usize, quiet: bool) -> Engine<'a> {
-        Engine { base, threads, quiet, cores: Cores::new(threads) }
+        Engine { base, quiet, cores: Cores::new(threads) }
     }
 
     /// The threads it runs on: `threads`, or rayon's default for 0.
@@ -51,7 +50,7 @@ impl Engine<'_> {
     /// The engine's thread pool.
     pub fn pool(&self) -> Result<rayon::ThreadPool> {
         rayon::ThreadPoolBuilder::new()
-            .num_threads(self.threads)
+            .num_threads(self.thread_count())
             .thread_name(|k| format!("demsweep-run-{k}"))
             .build()
             .map_err(|e| Error::input("--threads", e.to_string()))
