@@ -14,6 +14,7 @@ pub mod units;
 pub mod cli;
 pub mod converge;
 pub mod error;
+pub mod fnv;
 pub mod empirical;
 
 pub use error::{Error, Result};

@@ -1,6 +1,7 @@
 //! The sweep engine from the command line, on a small fast scene (`tests/data/tiny_beam.toml`):
 //! the same tables for any thread count, after a kill -9 and a rerun, and from shards merged;
-//! a changed scene never mixed with old rows; bad input refused with a clear message and no
+//! a changed scene never mixed with old rows, and runs of another build made again, not read
+//! back; bad input refused with a clear message and no
 //! table written; the Parquet file the same table as the CSV.
 
 use std::path::{Path, PathBuf};
@@ -184,6 +185,72 @@ fn a_changed_scene_is_never_mixed_with_old_rows() {
     assert_eq!(t.rows.len(), 1);
     assert_eq!(t.get(0, "strength_factor").unwrap().parse::<f64>().unwrap(), 61.0);
     std::fs::remove_dir_all(out).unwrap();
+}
+
+/// `path`'s table with every cell of column `name` set to `value`, or the column dropped.
+fn rewrite_column(path: &Path, name: &str, value: Option<&str>) {
+    let mut t = Table::read_csv(path).unwrap();
+    let k = t.column(name).unwrap();
+    match value {
+        Some(v) => t.rows.iter_mut().for_each(|r| r[k] = v.to_string()),
+        None => {
+            t.header.remove(k);
+            t.rows.iter_mut().for_each(|r| {
+                r.remove(k);
+            });
+        }
+    }
+    t.write_csv(path).unwrap();
+}
+
+// The bug: a sweep folder kept its runs under the scene's hash alone, which a new build of the
+// program did not change, so a changed kernel read back the runs of the old one as its own (the
+// README's main job "ran" in 0.2 s on a fresh clone, from the committed table).
+#[test]
+fn runs_of_another_build_are_made_again_not_read_back() {
+    let out = tmp("build");
+    let o = out.to_str().unwrap();
+    let sweep = || demsweep(&["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=300..400:100", "--out", o]);
+    assert!(sweep().status.success());
+    let fresh = untimed(&out.join("runs.csv"));
+    let build = fresh.get(0, "build").unwrap().to_string();
+    assert_eq!(build.len(), 16, "a build id of 16 hex digits, not {build:?}");
+    let again = sweep();
+    assert!(String::from_utf8_lossy(&again.stderr).contains("0 runs made, 2 found done"), "this build's runs are reused");
+    // The same rows as if another build had made them, and, apart, as a build before the column.
+    for (other, value) in [("00000000000000ff", Some("00000000000000ff")), ("unknown", None)] {
+        rewrite_column(&out.join("runs.csv"), "build", value);
+        let old = std::fs::read(out.join("runs.csv")).unwrap();
+        let o2 = sweep();
+        let msg = String::from_utf8_lossy(&o2.stderr);
+        assert!(o2.status.success(), "{msg}");
+        assert!(msg.contains(&format!("2 runs of another build of demsweep (build {other}")) && msg.contains("2 runs made, 0 found done"), "{msg}");
+        let aside = out.join(format!("runs-build-{other}.csv"));
+        assert_eq!(std::fs::read(&aside).unwrap(), old, "the old rows kept whole in {}", aside.display());
+        assert_eq!(untimed(&out.join("runs.csv")), fresh, "made again by this build: the rows of a fresh sweep");
+    }
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn shards_of_different_builds_are_not_merged() {
+    let (a, b, out) = (tmp("build-shard-1"), tmp("build-shard-2"), tmp("build-merged"));
+    ballistic(&a, "1", &["--shard", "1/2"]);
+    ballistic(&b, "1", &["--shard", "2/2"]);
+    rewrite_column(&b.join("runs.csv"), "build", Some("00000000000000ff"));
+    let o = demsweep(&["merge", a.to_str().unwrap(), b.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && msg.contains("another build") && msg.contains("00000000000000ff"), "{msg}");
+    assert!(!out.join("runs.csv").exists(), "no table written");
+    // Both of the other build: merged, but not bisected by this one.
+    rewrite_column(&a.join("runs.csv"), "build", Some("00000000000000ff"));
+    ok(&["merge", a.to_str().unwrap(), b.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = demsweep(&["merge", a.to_str().unwrap(), b.to_str().unwrap(), "--out", out.to_str().unwrap(), "--bisect"]);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && msg.contains("another build of demsweep (build 00000000000000ff"), "{msg}");
+    for d in [a, b, out] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
 }
 
 #[test]

@@ -22,6 +22,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::{Error, Result};
 use crate::scene::SceneFile;
 use crate::scene::overrides::Override;
+use crate::sweep::hash::build_id;
 use crate::sweep::job::{Base, Job};
 use crate::sweep::{Engine, Store};
 use crate::table::{Table, write_atomic};
@@ -315,6 +316,17 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
     let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
     if !bisect {
         return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran: 0, skipped: store.len() });
+    }
+    if store.build != build_id() {
+        // The bisection's runs would be this build's, beside grid runs of another.
+        return Err(Error::input(
+            "merge --bisect",
+            format!(
+                "the shards were run by another build of demsweep (build {}; this is {}): bisect with that build, or rerun the shards with this one",
+                store.build,
+                build_id()
+            ),
+        ));
     }
     let engine = Engine::new(&base, threads, quiet);
     bisect_and_report(&engine, &mut store, &grid, first.tol_fps, out)

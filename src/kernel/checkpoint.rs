@@ -17,6 +17,7 @@ use serde::{Deserialize, Serialize};
 use super::Model;
 use super::state::State;
 use crate::error::{Error, Result};
+use crate::fnv::fnv1a;
 
 const MAGIC: [u8; 8] = *b"DEMSWCK\0";
 /// Format version: 2 is the serde-derived state (1 was a hand-listed record); 3 drops the
@@ -29,15 +30,6 @@ struct Header {
     magic: [u8; 8],
     version: u32,
     fingerprint: u64,
-}
-
-/// FNV-1a, 64 bit.
-pub(crate) fn fnv1a(bytes: &[u8]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for &b in bytes {
-        h = (h ^ b as u64).wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
 }
 
 fn bad(message: String) -> Error {

@@ -62,6 +62,15 @@ impl Engine<'_> {
         for j in jobs {
             j.check(self.base)?;
         }
+        for (build, n, path) in store.set_aside.drain(..) {
+            if !self.quiet {
+                eprintln!(
+                    "{n} runs of another build of demsweep (build {build}; this is {}) set aside in {}: they are made again",
+                    super::hash::build_id(),
+                    path.display()
+                );
+            }
+        }
         let mut seen = std::collections::HashSet::new();
         let todo: Vec<&Job> = jobs.iter().filter(|j| !store.has(j) && seen.insert(j.id())).collect();
         let skipped = jobs.iter().filter(|j| store.has(j)).count();

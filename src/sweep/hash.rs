@@ -1,17 +1,16 @@
 //! The scene hash: FNV-1a (64 bit) over the canonical text of the scene as read (every default
-//! filled in, comments and layout gone) and the program version, so that two files that mean
-//! the same scene share a hash and a changed value or a new program never does.
+//! filled in, comments and layout gone) and the crate's version, so that two files that mean
+//! the same scene share a hash and a changed value never does. Which program made a run is the
+//! [`build_id`], kept beside it (a new build reruns a scene's runs; it does not make the scene
+//! another one).
 
+pub use crate::fnv::fnv1a;
 use crate::scene::SceneFile;
 
-/// FNV-1a, 64 bit.
-pub fn fnv1a(bytes: &[u8]) -> u64 {
-    let mut h: u64 = 0xcbf2_9ce4_8422_2325;
-    for &b in bytes {
-        h ^= b as u64;
-        h = h.wrapping_mul(0x0000_0100_0000_01b3);
-    }
-    h
+/// The id of this build of demsweep (16 hex digits): a hash of its sources and locked
+/// dependencies (`build.rs`). Two binaries with the same id come from the same code.
+pub fn build_id() -> &'static str {
+    env!("DEMSWEEP_BUILD")
 }
 
 /// The canonical text of a scene.

@@ -6,7 +6,8 @@
 //!
 //! Every row names its inputs: `run_id` (the overrides that made it, e.g.
 //! `projectile.v0_fps=850`), `scene_hash` (a hash of the whole base scene as read, defaults
-//! included, and of the program version) and `level`; a row can be traced to the exact run.
+//! included, and of the crate version), `build` (the program that made it, [`hash::build_id`])
+//! and `level`; a row can be traced to the exact run and the exact code.
 
 pub mod engine;
 pub mod hash;

@@ -2,16 +2,27 @@
 //! runs of one scene, one row each, in a fixed order (by the runs' inputs), rewritten whole and
 //! atomically after every finished run, so that a sweep killed at any moment loses at most the
 //! runs in flight, and a rerun skips what is there.
+//!
+//! Each row keeps the [`build_id`] of the program that made it, and only this build's rows are
+//! reused: the rows of another build (an older or newer demsweep, whose physics may differ) are
+//! set aside whole in `runs-build-<id>.csv` beside the table, and their runs made again.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
+use super::hash::build_id;
 use super::job::{Base, Job};
 use crate::error::{Error, Result};
 use crate::table::Table;
 
 /// The columns every row starts with, ahead of the run's own summary row.
-pub const KEY_COLUMNS: [&str; 4] = ["run_id", "purpose", "scene_hash", "level"];
+pub const KEY_COLUMNS: [&str; 5] = ["run_id", "purpose", "scene_hash", "build", "level"];
+
+/// Index of `level` in [`KEY_COLUMNS`].
+const LEVEL: usize = 4;
+
+/// Rows of a table written by a build without the `build` column.
+const NO_BUILD: &str = "unknown";
 
 /// The order of rows: each input value of the run id, numerically where it is a number.
 fn order_key(run_id: &str) -> Vec<(f64, String)> {
@@ -45,6 +56,11 @@ pub struct Store {
     pub dir: PathBuf,
     /// The scene hash every row must carry.
     pub hash: String,
+    /// The build every row must carry: this program's for a store that runs, the rows' own for a
+    /// shard read back.
+    pub build: String,
+    /// Rows of other builds found on opening, set aside: (build, rows, the file they went to).
+    pub set_aside: Vec<(String, usize, PathBuf)>,
     /// Column names (the key columns, then the summary row's).
     pub header: Vec<String>,
     /// Rows by run id.
@@ -60,14 +76,10 @@ impl Store {
     }
 
     /// Open the runs of `dir` for `base`: the rows already there are kept and their runs
-    /// skipped. Rows of another scene are never mixed in: that is an error that says how to
-    /// start afresh, unless `fresh`, which removes the folder's old tables first.
+    /// skipped if this build made them; rows of other builds are set aside (`set_aside`). Rows of
+    /// another scene are never mixed in: that is an error that says how to start afresh, unless
+    /// `fresh`, which removes the folder's old tables first.
     pub fn open(dir: &Path, base: &Base, fresh: bool) -> Result<Store> {
-        Self::open_hash(dir, &base.hash, &base.path, fresh)
-    }
-
-    fn open_hash(dir: &Path, hash: &str, scene: &Path, fresh: bool) -> Result<Store> {
-        let path = Self::csv_path(dir);
         if fresh {
             for name in ["runs.csv", "runs.parquet", "thresholds.csv"] {
                 let p = dir.join(name);
@@ -76,7 +88,43 @@ impl Store {
                 }
             }
         }
-        let mut store = Store { dir: dir.to_path_buf(), hash: hash.to_string(), header: Vec::new(), rows: BTreeMap::new(), parquet: true };
+        let mut store = Self::open_as(dir, &base.hash, &base.path, None)?;
+        let others: Vec<String> = store.rows_by_build().into_keys().filter(|b| b != build_id()).collect();
+        for b in others {
+            let rows: Vec<Vec<String>> = store.rows_of(&b).map(|(_, r)| r.clone()).collect();
+            let path = dir.join(format!("runs-build-{b}.csv"));
+            Table { header: store.header.clone(), rows: rows.clone() }.write_csv(&path)?;
+            store.rows.retain(|_, r| store_build(&store.header, r) != b);
+            store.set_aside.push((b, rows.len(), path));
+        }
+        store.build = build_id().to_string();
+        if let Some((b, _, _)) = store.set_aside.first() {
+            // The thresholds were drawn from the rows set aside.
+            let (from, to) = (dir.join("thresholds.csv"), dir.join(format!("thresholds-build-{b}.csv")));
+            if from.exists() {
+                std::fs::rename(&from, &to).map_err(|e| Error::io(&from, e))?;
+            }
+            if store.rows.is_empty() {
+                // Nothing of this build: the table starts afresh (the old header may lack `build`).
+                store.header.clear();
+            }
+        }
+        Ok(store)
+    }
+
+    /// The rows of `dir/runs.csv`, all of scene `hash` (an error otherwise), and all of `build`
+    /// when one is given; with none, the store takes the rows' build.
+    fn open_as(dir: &Path, hash: &str, scene: &Path, build: Option<&str>) -> Result<Store> {
+        let path = Self::csv_path(dir);
+        let mut store = Store {
+            dir: dir.to_path_buf(),
+            hash: hash.to_string(),
+            build: build.unwrap_or(build_id()).to_string(),
+            set_aside: Vec::new(),
+            header: Vec::new(),
+            rows: BTreeMap::new(),
+            parquet: true,
+        };
         if path.exists() {
             let t = Table::read_csv(&path)?;
             let (Some(id), Some(h)) = (t.column("run_id"), t.column("scene_hash")) else {
@@ -101,8 +149,21 @@ impl Store {
         Ok(store)
     }
 
-    /// Read the runs of a sweep folder as they are (a shard, for `merge`); the scene hash is
-    /// the rows' (all rows must share it).
+    /// Row counts by the build that made them.
+    fn rows_by_build(&self) -> BTreeMap<String, usize> {
+        let mut n = BTreeMap::new();
+        for r in self.rows.values() {
+            *n.entry(store_build(&self.header, r).to_string()).or_insert(0) += 1;
+        }
+        n
+    }
+
+    fn rows_of<'a>(&'a self, build: &'a str) -> impl Iterator<Item = (&'a String, &'a Vec<String>)> + 'a {
+        self.rows.iter().filter(move |(_, r)| store_build(&self.header, r) == build)
+    }
+
+    /// Read the runs of a sweep folder as they are (a shard, for `merge`); the scene hash and
+    /// the build are the rows' (all rows must share them).
     pub fn read(dir: &Path) -> Result<Store> {
         let path = Self::csv_path(dir);
         if !path.exists() {
@@ -111,7 +172,17 @@ impl Store {
         let t = Table::read_csv(&path)?;
         let h = t.column("scene_hash").ok_or_else(|| Error::input(path.display().to_string(), "not a runs table of demsweep (no scene_hash column)"))?;
         let hash = t.rows.first().map(|r| r[h].clone()).unwrap_or_default();
-        Store::open_hash(dir, &hash, &path, false)
+        let mut store = Store::open_as(dir, &hash, &path, None)?;
+        let builds = store.rows_by_build();
+        match builds.len() {
+            0 => {}
+            1 => store.build = builds.into_keys().next().expect("one build"),
+            _ => {
+                let list: Vec<String> = builds.iter().map(|(b, n)| format!("{n} of build {b}")).collect();
+                return Err(Error::input(path.display().to_string(), format!("holds runs of several builds of demsweep ({})", list.join(", "))));
+            }
+        }
+        Ok(store)
     }
 
     /// Whether `job` has finished.
@@ -153,10 +224,10 @@ impl Store {
     /// Add a finished run's summary row (the key columns are put in front).
     pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
         let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
-        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), level.to_string()];
+        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), self.build.clone(), level.to_string()];
         let row_level = row.iter().find(|c| c.0 == "level").map(|c| c.1.clone());
         if let Some(l) = row_level {
-            cells[3] = l;
+            cells[LEVEL] = l;
         }
         for (k, v) in row.iter().filter(|c| c.0 != "level") {
             header.push(k.clone());
@@ -200,6 +271,15 @@ impl Store {
                 format!("is a sweep of another scene (scene_hash {}, not {}): shards of different scenes cannot be merged", other.hash, self.hash),
             ));
         }
+        if !other.rows.is_empty() && !self.rows.is_empty() && other.build != self.build {
+            return Err(Error::input(
+                other.dir.display().to_string(),
+                format!("was run by another build of demsweep (build {}, not {}): shards of different builds cannot be merged", other.build, self.build),
+            ));
+        }
+        if self.rows.is_empty() {
+            self.build = other.build.clone();
+        }
         if !other.header.is_empty() {
             if self.header.is_empty() {
                 self.header = other.header.clone();
@@ -210,6 +290,11 @@ impl Store {
         self.rows.extend(other.rows);
         Ok(())
     }
+}
+
+/// The build that made a row (`NO_BUILD` for a table without the column).
+fn store_build<'a>(header: &[String], row: &'a [String]) -> &'a str {
+    header.iter().position(|h| h == "build").map_or(NO_BUILD, |k| row[k].as_str())
 }
 
 #[cfg(test)]
