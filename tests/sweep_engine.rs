@@ -229,6 +229,13 @@ fn runs_of_another_build_are_made_again_not_read_back() {
         assert_eq!(std::fs::read(&aside).unwrap(), old, "the old rows kept whole in {}", aside.display());
         assert_eq!(untimed(&out.join("runs.csv")), fresh, "made again by this build: the rows of a fresh sweep");
     }
+    // Set aside again under a taken name: beside the first, which stays as it was.
+    let first = std::fs::read(out.join("runs-build-00000000000000ff.csv")).unwrap();
+    rewrite_column(&out.join("runs.csv"), "build", Some("00000000000000ff"));
+    let old = std::fs::read(out.join("runs.csv")).unwrap();
+    assert!(sweep().status.success());
+    assert_eq!(std::fs::read(out.join("runs-build-00000000000000ff.csv")).unwrap(), first);
+    assert_eq!(std::fs::read(out.join("runs-build-00000000000000ff.2.csv")).unwrap(), old);
     std::fs::remove_dir_all(out).unwrap();
 }
 

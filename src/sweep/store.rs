@@ -88,19 +88,18 @@ impl Store {
                 }
             }
         }
-        let mut store = Self::open_as(dir, &base.hash, &base.path, None)?;
+        let mut store = Self::open_as(dir, &base.hash, &base.path)?;
         let others: Vec<String> = store.rows_by_build().into_keys().filter(|b| b != build_id()).collect();
         for b in others {
-            let rows: Vec<Vec<String>> = store.rows_of(&b).map(|(_, r)| r.clone()).collect();
-            let path = dir.join(format!("runs-build-{b}.csv"));
+            let rows: Vec<Vec<String>> = store.rows.values().filter(|r| store_build(&store.header, r) == b).cloned().collect();
+            let path = unused(dir, &format!("runs-build-{b}"));
             Table { header: store.header.clone(), rows: rows.clone() }.write_csv(&path)?;
             store.rows.retain(|_, r| store_build(&store.header, r) != b);
             store.set_aside.push((b, rows.len(), path));
         }
-        store.build = build_id().to_string();
         if let Some((b, _, _)) = store.set_aside.first() {
             // The thresholds were drawn from the rows set aside.
-            let (from, to) = (dir.join("thresholds.csv"), dir.join(format!("thresholds-build-{b}.csv")));
+            let (from, to) = (dir.join("thresholds.csv"), unused(dir, &format!("thresholds-build-{b}")));
             if from.exists() {
                 std::fs::rename(&from, &to).map_err(|e| Error::io(&from, e))?;
             }
@@ -112,14 +111,14 @@ impl Store {
         Ok(store)
     }
 
-    /// The rows of `dir/runs.csv`, all of scene `hash` (an error otherwise), and all of `build`
-    /// when one is given; with none, the store takes the rows' build.
-    fn open_as(dir: &Path, hash: &str, scene: &Path, build: Option<&str>) -> Result<Store> {
+    /// The rows of `dir/runs.csv`, all of scene `hash` (an error otherwise), of whichever
+    /// builds; the store's build is this one's.
+    fn open_as(dir: &Path, hash: &str, scene: &Path) -> Result<Store> {
         let path = Self::csv_path(dir);
         let mut store = Store {
             dir: dir.to_path_buf(),
             hash: hash.to_string(),
-            build: build.unwrap_or(build_id()).to_string(),
+            build: build_id().to_string(),
             set_aside: Vec::new(),
             header: Vec::new(),
             rows: BTreeMap::new(),
@@ -158,10 +157,6 @@ impl Store {
         n
     }
 
-    fn rows_of<'a>(&'a self, build: &'a str) -> impl Iterator<Item = (&'a String, &'a Vec<String>)> + 'a {
-        self.rows.iter().filter(move |(_, r)| store_build(&self.header, r) == build)
-    }
-
     /// Read the runs of a sweep folder as they are (a shard, for `merge`); the scene hash and
     /// the build are the rows' (all rows must share them).
     pub fn read(dir: &Path) -> Result<Store> {
@@ -172,7 +167,7 @@ impl Store {
         let t = Table::read_csv(&path)?;
         let h = t.column("scene_hash").ok_or_else(|| Error::input(path.display().to_string(), "not a runs table of demsweep (no scene_hash column)"))?;
         let hash = t.rows.first().map(|r| r[h].clone()).unwrap_or_default();
-        let mut store = Store::open_as(dir, &hash, &path, None)?;
+        let mut store = Store::open_as(dir, &hash, &path)?;
         let builds = store.rows_by_build();
         match builds.len() {
             0 => {}
@@ -290,6 +285,12 @@ impl Store {
         self.rows.extend(other.rows);
         Ok(())
     }
+}
+
+/// `dir/STEM.csv`, or `dir/STEM.2.csv`, `.3`, … if taken: a set-aside table never replaces an
+/// earlier one (which may hold runs the new one lacks).
+fn unused(dir: &Path, stem: &str) -> PathBuf {
+    (1..).map(|k| dir.join(if k == 1 { format!("{stem}.csv") } else { format!("{stem}.{k}.csv") })).find(|p| !p.exists()).expect("a free name")
 }
 
 /// The build that made a row (`NO_BUILD` for a table without the column).
