@@ -1,7 +1,8 @@
 //! Restart equivalence (MercuryDPM): a run checkpointed at step n and restored into a model
 //! built afresh from the same scene ends with the same bits as a run that never stopped, for
 //! a scene where bonds break, fragments slide and neighbour lists are rebuilt in between; a
-//! checkpoint refuses a different scene and damaged bytes without touching the model.
+//! checkpoint refuses a different scene, another build and damaged bytes without touching the
+//! model.
 
 mod common;
 
@@ -31,7 +32,7 @@ fn a_restored_run_ends_bitwise_equal_to_an_uninterrupted_one() {
 }
 
 #[test]
-fn a_checkpoint_refuses_another_scene_and_damaged_bytes() {
+fn a_checkpoint_refuses_another_scene_another_build_and_damaged_bytes() {
     let mut m = impact::model();
     m.run_steps(50).unwrap();
     let bytes = m.checkpoint();
@@ -52,4 +53,13 @@ fn a_checkpoint_refuses_another_scene_and_damaged_bytes() {
     other.motion.dt_s *= 0.5;
     let msg = err(&mut other, &bytes);
     assert!(msg.contains("different scene"), "{msg}");
+
+    // Written by another build: refused, naming both.
+    let build = demsweep::sweep::hash::build_id();
+    assert_eq!(&bytes[9..25], build.as_bytes(), "the header carries the writer's build id");
+    let mut rebuilt = bytes.clone();
+    rebuilt[9..25].copy_from_slice(b"00000000000000ff");
+    let msg = err(&mut m, &rebuilt);
+    assert!(msg.contains("another build of demsweep (build 00000000000000ff; this is") && msg.contains(build), "{msg}");
+    assert!(impact::state_bits(&m) == before, "a refused restore changed the model");
 }

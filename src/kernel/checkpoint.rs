@@ -10,7 +10,11 @@
 //! refuses a checkpoint written by another scene. A new parameter is covered by the fingerprint
 //! as soon as it is a field of the configuration.
 //!
-//! Format: a header (magic, format version, fingerprint), then the state.
+//! A checkpoint also names the build of demsweep that wrote it (`sweep::hash::build_id`) and is
+//! refused by any other: a run continued by a changed program would not be the run that never
+//! stopped.
+//!
+//! Format: a header (magic, format version, build id, fingerprint), then the state.
 
 use serde::{Deserialize, Serialize};
 
@@ -18,18 +22,26 @@ use super::Model;
 use super::state::State;
 use crate::error::{Error, Result};
 use crate::fnv::fnv1a;
+use crate::sweep::hash::build_id;
 
 const MAGIC: [u8; 8] = *b"DEMSWCK\0";
 /// Format version: 2 is the serde-derived state (1 was a hand-listed record); 3 drops the
 /// zero shift of the rate-dependent springs (secant moduli) and adds each bond's mean rate
-/// (`law::rate`).
-const VERSION: u32 = 4;
+/// (`law::rate`); 5 adds the build id.
+const VERSION: u32 = 5;
 
 #[derive(Serialize, Deserialize)]
 struct Header {
     magic: [u8; 8],
     version: u32,
+    /// The writer's build id, its 16 hex digits (bytes 9..25 of the checkpoint).
+    build: [u8; 16],
     fingerprint: u64,
+}
+
+/// This build's id as the header stores it.
+fn this_build() -> [u8; 16] {
+    build_id().as_bytes().try_into().expect("a build id of 16 hex digits")
 }
 
 fn bad(message: String) -> Error {
@@ -63,7 +75,7 @@ impl Model {
 
     /// The evolving state as bytes (see the module documentation).
     pub fn checkpoint(&self) -> Vec<u8> {
-        let header = Header { magic: MAGIC, version: VERSION, fingerprint: self.fingerprint() };
+        let header = Header { magic: MAGIC, version: VERSION, build: this_build(), fingerprint: self.fingerprint() };
         let mut out = postcard::to_stdvec(&header).expect("the header serialises");
         out.extend(postcard::to_stdvec(&self.state).expect("the state serialises"));
         out
@@ -78,6 +90,13 @@ impl Model {
         let (header, rest) = postcard::take_from_bytes::<Header>(bytes).map_err(decode_error)?;
         if header.version != VERSION {
             return Err(bad(format!("format version {}, this demsweep reads {VERSION}", header.version)));
+        }
+        if header.build != this_build() {
+            return Err(bad(format!(
+                "written by another build of demsweep (build {}; this is {}): resumed by this one, the run would not be the one that never stopped; run it from the start, or resume it with that build",
+                String::from_utf8_lossy(&header.build),
+                build_id()
+            )));
         }
         if header.fingerprint != self.fingerprint() {
             return Err(bad("written for a different scene (elements, materials, laws, boundary groups or time step differ)".into()));
