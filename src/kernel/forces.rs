@@ -167,12 +167,13 @@ fn scatter<P: PartSet, const RECORD: bool>(
 #[inline(always)]
 fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, classes: &[ContactClass], d: &mut Dissipation) -> ContactForce {
     let k = &classes[c.class as usize];
+    let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
-        law::bonded::<P>(c, x, k, &geometry(at.pos, at.vel, c, k), at.dt_s, d)
-    } else if apart_with_nothing_to_forget(at.pos, c, k) {
+        law::bonded::<P>(c, x, k, &along(at.vel, c, k, s), at.dt_s, d)
+    } else if apart_with_nothing_to_forget(c, k, s) {
         ContactForce::default()
     } else {
-        frictional::<P>(at, c, k, d)
+        frictional::<P>(at, c, k, s, d)
     }
 }
 
@@ -180,22 +181,25 @@ fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, classes: 
 /// `law::friction::apart` would change nothing. Most contacts of a fractured body are such;
 /// checked here, in line, they skip the call.
 #[inline(always)]
-fn apart_with_nothing_to_forget(pos: &[[f64; 3]], c: &Contact, k: &ContactClass) -> bool {
-    let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
-    let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
-    c.ut_m == 0.0 && c.rest_m == k.radius_sum_m && dx * dx + dy * dy >= c.rest_m * c.rest_m
+fn apart_with_nothing_to_forget(c: &Contact, k: &ContactClass, s: Separation) -> bool {
+    c.ut_m == 0.0 && c.rest_m == k.radius_sum_m && apart(c, s)
+}
+
+/// A frictional pair that does not touch: its centres at least its rest length apart.
+#[inline(always)]
+fn apart(c: &Contact, s: Separation) -> bool {
+    s.d2_m2 >= c.rest_m * c.rest_m
 }
 
 /// A frictional contact, out of line: inlined beside the bond law it made the all-bonded loop
 /// 2.2× slower (the benchmark block: 25 → 11.5 ns per contact for the contact stage).
 #[inline(never)]
-fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass, d: &mut Dissipation) -> ContactForce {
-    match kinematics(at.pos, at.vel, c, k) {
-        Ok(g) => law::friction::touching::<P>(c, k, &g, at.dt_s, d),
-        Err(d2) => {
-            law::friction::apart(c, k, d2, d);
-            ContactForce::default()
-        }
+fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass, s: Separation, d: &mut Dissipation) -> ContactForce {
+    if apart(c, s) {
+        law::friction::apart(c, k, s.d2_m2, d);
+        ContactForce::default()
+    } else {
+        law::friction::touching::<P>(c, k, &along(at.vel, c, k, s), at.dt_s, d)
     }
 }
 
@@ -203,30 +207,35 @@ fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass,
 /// that does not touch, Err(its squared distance, m²).
 #[inline(always)]
 pub fn kinematics(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass) -> Result<Kinematics, f64> {
-    let (i, j) = (c.i as usize, c.j as usize);
-    let (pi, pj) = (pos[i], pos[j]);
-    let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
-    let d2 = dx * dx + dy * dy;
-    if c.bond == Bond::Frictional && d2 >= c.rest_m * c.rest_m {
-        return Err(d2);
+    let s = separation(pos, c);
+    if c.bond == Bond::Frictional && apart(c, s) {
+        return Err(s.d2_m2);
     }
-    Ok(along(pos, vel, c, k, dx, dy, d2))
+    Ok(along(vel, c, k, s))
 }
 
-/// Geometry and relative velocity of a bond.
+/// From i's centre to j's: (dx m, dy m) and its square length d2 (m²).
+#[derive(Clone, Copy)]
+struct Separation {
+    dx_m: f64,
+    dy_m: f64,
+    d2_m2: f64,
+}
+
 #[inline(always)]
-fn geometry(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass) -> Kinematics {
+fn separation(pos: &[[f64; 3]], c: &Contact) -> Separation {
     let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
-    let (dx, dy) = (pj[0] - pi[0], pj[1] - pi[1]);
-    along(pos, vel, c, k, dx, dy, dx * dx + dy * dy)
+    let (dx_m, dy_m) = (pj[0] - pi[0], pj[1] - pi[1]);
+    Separation { dx_m, dy_m, d2_m2: dx_m * dx_m + dy_m * dy_m }
 }
 
+/// Geometry and relative velocity of a pair `s` apart.
 #[inline(always)]
-fn along(_pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass, dx: f64, dy: f64, d2: f64) -> Kinematics {
+fn along(vel: &[[f64; 3]], c: &Contact, k: &ContactClass, s: Separation) -> Kinematics {
     let (i, j) = (c.i as usize, c.j as usize);
-    let dist = d2.sqrt();
+    let dist = s.d2_m2.sqrt();
     let inv = 1.0 / dist;
-    let (nx, ny) = (dx * inv, dy * inv);
+    let (nx, ny) = (s.dx_m * inv, s.dy_m * inv);
     let (vi, vj) = (vel[i], vel[j]);
     let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
     let (li, lj) = (dist * k.lever_i, dist * k.lever_j);

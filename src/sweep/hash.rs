@@ -4,7 +4,7 @@
 //! [`build_id`], kept beside it (a new build reruns a scene's runs; it does not make the scene
 //! another one).
 
-pub use crate::fnv::fnv1a;
+use crate::fnv::fnv1a;
 use crate::scene::SceneFile;
 
 /// The id of this build of demsweep (16 hex digits): a hash of its sources and locked
