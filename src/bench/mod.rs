@@ -237,7 +237,8 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
 /// One row of the optional-law benchmark.
 #[derive(Debug, Clone)]
 pub struct LawFigures {
-    /// "none", "all", the parts on, or "simple" (the simple kernel of [`simple`]).
+    /// "none", "all", the parts on, "<parts>, one at a time" (`Model::four_lanes` off) or
+    /// "simple" (the simple kernel of [`simple`]).
     pub name: String,
     /// Contacts stepped.
     pub contacts: usize,
@@ -247,13 +248,21 @@ pub struct LawFigures {
     pub range_s: (f64, f64),
 }
 
-/// The block on one thread with each set of optional parts in `sets`, and the simple kernel,
-/// timed round-robin (each round times every variant once, so that the machine's drift is
-/// shared) for `repeats` rounds of `steps` steps.
+/// The block on one thread with each set of optional parts in `sets`, the first set again
+/// with its bonds one at a time (`Model::four_lanes` off, named "<set>, one at a time"), and the
+/// simple kernel, timed round-robin (each round times every variant once, so that the machine's
+/// drift is shared) for `repeats` rounds of `steps` steps.
 pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repeats: usize) -> Result<Vec<LawFigures>> {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(1).build().expect("thread pool");
     pool.install(|| {
         let mut models = sets.iter().map(|&l| workload_with(columns, rows, l)).collect::<Result<Vec<_>>>()?;
+        let mut names: Vec<String> = sets.iter().map(Laws::name).collect();
+        if let Some(first) = sets.first() {
+            let mut scalar = workload_with(columns, rows, *first)?;
+            scalar.four_lanes = false;
+            models.push(scalar);
+            names.push(format!("{}, one at a time", first.name()));
+        }
         let mut plain = simple::Simple::from_model(&workload_with(columns, rows, Laws::default())?);
         for m in &mut models {
             m.run_steps(steps.min(200))?;
@@ -261,7 +270,7 @@ pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repe
         for _ in 0..steps.min(200) {
             plain.step();
         }
-        let mut times = vec![Vec::with_capacity(repeats); sets.len() + 1];
+        let mut times = vec![Vec::with_capacity(repeats); models.len() + 1];
         for _ in 0..repeats {
             for (m, t) in models.iter_mut().zip(times.iter_mut()) {
                 let t0 = Instant::now();
@@ -272,13 +281,13 @@ pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repe
             for _ in 0..steps {
                 plain.step();
             }
-            times[sets.len()].push(t0.elapsed().as_secs_f64() / steps as f64);
+            times[models.len()].push(t0.elapsed().as_secs_f64() / steps as f64);
         }
         let mut out = Vec::new();
         for (k, t) in times.iter_mut().enumerate() {
             t.sort_by(f64::total_cmp);
-            let (name, contacts) = match sets.get(k) {
-                Some(l) => (l.name(), models[k].state.contacts.len()),
+            let (name, contacts) = match models.get(k) {
+                Some(m) => (names[k].clone(), m.state.contacts.len()),
                 None => ("simple".to_string(), plain.bonds()),
             };
             out.push(LawFigures { name, contacts, step_s: t[t.len() / 2], range_s: (t[0], t[t.len() - 1]) });

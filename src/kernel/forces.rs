@@ -8,10 +8,13 @@
 //! increasing contact order, the same order as the gather's adjacency, from the same zero: the
 //! sums are bitwise the same either way.
 //!
-//! The loop is compiled once per set of optional law parts (`law::PartSet`).
+//! The loop is compiled once per set of optional law parts (`law::PartSet`). Where the part
+//! set allows it and the processor has AVX, runs of four intact bonds go through the bond law's
+//! elastic branch four at a time ([`bonds4`]), with the same bits.
 
 use rayon::prelude::*;
 
+use super::bonds4;
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
@@ -40,34 +43,50 @@ pub struct Stage<'a> {
     pub sums: Option<&'a mut [[f64; 3]]>,
     /// Store each contact's force in `force` (always done without `sums`).
     pub record: bool,
+    /// Take four bonds at a time where the parts and the processor allow ([`bonds4`]).
+    pub four_lanes: bool,
 }
 
 impl law::PartsVisitor for Stage<'_> {
     type Output = ();
+    #[inline(never)]
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums, record } = self;
-        process::<P>(pos, vel, list, extra, force, classes, dt_s, partial, sums, record)
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums, record, four_lanes } = self;
+        let at = &StepInput { pos, vel, dt_s, classes };
+        let four = four_lanes && bonds4_apply::<P>();
+        match sums {
+            None if four => {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: `bonds4_apply` checked that the processor has AVX.
+                unsafe {
+                    parallel_avx::<P>(at, list, extra, force, partial)
+                }
+            }
+            None => parallel::<P, false>(at, list, extra, force, partial),
+            // The serial loop compiled with and without the per-contact store: no branch per
+            // contact on an observable the run does not ask for.
+            Some(sums) => match (record, four) {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as above.
+                (true, true) => unsafe { scatter_avx::<P, true>(at, list, extra, force, partial, sums) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as above.
+                (false, true) => unsafe { scatter_avx::<P, false>(at, list, extra, force, partial, sums) },
+                (true, _) => scatter::<P, true, false>(at, list, extra, force, partial, sums),
+                (false, _) => scatter::<P, false, false>(at, list, extra, force, partial, sums),
+            },
+        }
     }
 }
 
-/// One chunk: each contact's force into `fs`, its dissipation into `d`.
+/// True when the part set's bond law can take four elastic bonds at once (no part that reads
+/// the normal velocity or keeps an extra slot) and the processor can.
 #[inline(always)]
-#[allow(clippy::too_many_arguments)]
-fn chunk<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], fs: &mut [ContactForce], classes: &[ContactClass], d: &mut Dissipation) {
-    *d = Dissipation::default();
-    if P::EXTRA {
-        for ((c, x), f) in cs.iter_mut().zip(xs.iter_mut()).zip(fs.iter_mut()) {
-            *f = one::<P>(at, c, x, classes, d);
-        }
-    } else {
-        let mut scratch = Extra::new(0.0);
-        for (c, f) in cs.iter_mut().zip(fs.iter_mut()) {
-            *f = one::<P>(at, c, &mut scratch, classes, d);
-        }
-    }
+fn bonds4_apply<P: PartSet>() -> bool {
+    !P::RATE && !P::COMPACTION && !P::DAMPING && bonds4::available()
 }
 
-/// What every contact of a step reads: the state it starts from and the step.
+/// What every contact of a step reads: the state it starts from, the step and the classes.
 struct StepInput<'a> {
     /// Positions [x m, y m, θ rad].
     pos: &'a [[f64; 3]],
@@ -75,98 +94,162 @@ struct StepInput<'a> {
     vel: &'a [[f64; 3]],
     /// Δt, s.
     dt_s: f64,
+    /// Contact classes.
+    classes: &'a [ContactClass],
 }
 
-/// Compute all contact forces: into `force` without `sums`; with them, summed into the
-/// elements, and into `force` too when `record`.
+/// Several threads: each contact's force into `force`, chunk by chunk.
 #[inline(never)]
-#[allow(clippy::too_many_arguments)]
-pub fn process<P: PartSet>(
-    pos: &[[f64; 3]],
-    vel: &[[f64; 3]],
-    list: &mut [Contact],
-    extra: &mut [Extra],
-    force: &mut [ContactForce],
-    classes: &[ContactClass],
-    dt_s: f64,
-    partial: &mut [Dissipation],
-    sums: Option<&mut [[f64; 3]]>,
-    record: bool,
-) {
-    // One reference for the frictional path's call, built once: fewer arguments to set up.
-    let at = &StepInput { pos, vel, dt_s };
-    match sums {
-        None => {
-            let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
-                chunk::<P>(at, cs, xs, fs, classes, d)
-            };
-            let chunks = list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut());
-            if P::EXTRA {
-                chunks.zip(extra.par_chunks_mut(CHUNK)).for_each(|(a, xs)| run(a, xs));
-            } else {
-                chunks.for_each(|a| run(a, &mut []));
-            }
-        }
-        // The serial loop compiled with and without the per-contact store: no branch per
-        // contact on an observable the run does not ask for.
-        Some(sums) if record => scatter::<P, true>(at, list, extra, force, classes, partial, sums),
-        Some(sums) => scatter::<P, false>(at, list, extra, force, classes, partial, sums),
+fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contact], extra: &mut [Extra], force: &mut [ContactForce], partial: &mut [Dissipation]) {
+    let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
+        *d = Dissipation::default();
+        each::<P, FOUR>(at, cs, xs, d, |k, _, f| fs[k] = *f);
+    };
+    let chunks = list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut());
+    if P::EXTRA {
+        chunks.zip(extra.par_chunks_mut(CHUNK)).for_each(|(a, xs)| run(a, xs));
+    } else {
+        chunks.for_each(|a| run(a, &mut []));
     }
+}
+
+/// [`parallel`] compiled for AVX, with the four-bond groups.
+///
+/// # Safety
+/// The processor must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn parallel_avx<P: PartSet>(at: &StepInput<'_>, list: &mut [Contact], extra: &mut [Extra], force: &mut [ContactForce], partial: &mut [Dissipation]) {
+    parallel::<P, true>(at, list, extra, force, partial)
 }
 
 /// One thread: each contact's force added to its two elements as it goes (and stored in
 /// `force` when `RECORD`).
 #[inline(always)]
-fn scatter<P: PartSet, const RECORD: bool>(
+fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
     list: &mut [Contact],
     extra: &mut [Extra],
     force: &mut [ContactForce],
-    classes: &[ContactClass],
     partial: &mut [Dissipation],
     sums: &mut [[f64; 3]],
 ) {
-    // Contacts are sorted by i: keep i's running sum in registers while i repeats.
-    let mut run_i = u32::MAX;
-    let mut acc = [0.0f64; 3];
-    let mut scratch = Extra::new(0.0);
+    let mut out = Scatter { sums, run_i: u32::MAX, acc: [0.0; 3] };
     let n = list.len();
-    let mut from = 0;
-    for d in partial.iter_mut() {
-        let to = (from + CHUNK).min(n);
+    for (c, d) in partial.iter_mut().enumerate() {
+        let (from, to) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
+        let xs = if P::EXTRA { &mut extra[from..to] } else { &mut [] };
         *d = Dissipation::default();
-        for k in from..to {
-            let c = &mut list[k];
-            let x = if P::EXTRA { &mut extra[k] } else { &mut scratch };
-            let cf = one::<P>(at, c, x, classes, d);
+        each::<P, FOUR>(at, &mut list[from..to], xs, d, |k, c, f| {
             if RECORD {
-                force[k] = cf;
+                force[from + k] = *f;
             }
-            if c.i != run_i {
-                if run_i != u32::MAX {
-                    sums[run_i as usize] = acc;
-                }
-                run_i = c.i;
-                acc = sums[run_i as usize];
-            }
-            acc[0] += cf.fx;
-            acc[1] += cf.fy;
-            acc[2] += cf.ti;
-            let s = &mut sums[c.j as usize];
-            s[0] -= cf.fx;
-            s[1] -= cf.fy;
-            s[2] += cf.tj;
-        }
-        from = to;
+            out.add(c, f);
+        });
     }
-    if run_i != u32::MAX {
-        sums[run_i as usize] = acc;
+    out.finish();
+}
+
+/// [`scatter`] compiled for AVX, with the four-bond groups.
+///
+/// # Safety
+/// The processor must have AVX.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+unsafe fn scatter_avx<P: PartSet, const RECORD: bool>(
+    at: &StepInput<'_>,
+    list: &mut [Contact],
+    extra: &mut [Extra],
+    force: &mut [ContactForce],
+    partial: &mut [Dissipation],
+    sums: &mut [[f64; 3]],
+) {
+    scatter::<P, RECORD, true>(at, list, extra, force, partial, sums)
+}
+
+/// Per-element force sums as the contacts are visited in order: contacts are sorted by i, so
+/// i's running sum stays in registers while i repeats.
+struct Scatter<'a> {
+    sums: &'a mut [[f64; 3]],
+    run_i: u32,
+    acc: [f64; 3],
+}
+
+impl Scatter<'_> {
+    #[inline(always)]
+    fn add(&mut self, c: &Contact, f: &ContactForce) {
+        if c.i != self.run_i {
+            if self.run_i != u32::MAX {
+                self.sums[self.run_i as usize] = self.acc;
+            }
+            self.run_i = c.i;
+            self.acc = self.sums[self.run_i as usize];
+        }
+        self.acc[0] += f.fx;
+        self.acc[1] += f.fy;
+        self.acc[2] += f.ti;
+        let s = &mut self.sums[c.j as usize];
+        s[0] -= f.fx;
+        s[1] -= f.fy;
+        s[2] += f.tj;
+    }
+
+    #[inline(always)]
+    fn finish(self) {
+        if self.run_i != u32::MAX {
+            self.sums[self.run_i as usize] = self.acc;
+        }
+    }
+}
+
+/// Every contact of `cs` (extra slots `xs`, empty unless the parts keep them) evaluated, its
+/// dissipation added to `d`, and `sink(index in cs, contact, force)` called in contact order.
+/// With `FOUR` (only in a function compiled for AVX), whole groups of four go through
+/// [`bonds4::elastic`] when they are intact bonds of one class, one by one otherwise.
+#[inline(always)]
+fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
+    let mut scratch = Extra::new(0.0);
+    let mut from = 0;
+    #[cfg(target_arch = "x86_64")]
+    if FOUR {
+        const L: usize = bonds4::LANES;
+        while from + L <= cs.len() {
+            let group: &mut [Contact; L] = (&mut cs[from..from + L]).try_into().unwrap();
+            // SAFETY: FOUR is set only by functions compiled for AVX, called only when the
+            // processor has it.
+            let elastic = if bonds4::eligible(group) {
+                unsafe { bonds4::elastic(at.pos, at.vel, group, &at.classes[group[0].class as usize], at.dt_s) }
+            } else {
+                None
+            };
+            if let Some(g) = elastic {
+                for (l, c) in group.iter_mut().enumerate() {
+                    c.ut_m = g.ut_m[l];
+                    sink(from + l, c, &g.force[l]);
+                }
+                // The scalar law books each elastic step's plastic work as 0 + 0: once is the
+                // same sum.
+                d.plastic_work_j += 0.0;
+            } else {
+                for (l, c) in group.iter_mut().enumerate() {
+                    let x = if P::EXTRA { &mut xs[from + l] } else { &mut scratch };
+                    let f = one::<P>(at, c, x, d);
+                    sink(from + l, c, &f);
+                }
+            }
+            from += L;
+        }
+    }
+    for (k, c) in cs.iter_mut().enumerate().skip(from) {
+        let x = if P::EXTRA { &mut xs[k] } else { &mut scratch };
+        let f = one::<P>(at, c, x, d);
+        sink(k, c, &f);
     }
 }
 
 #[inline(always)]
-fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, classes: &[ContactClass], d: &mut Dissipation) -> ContactForce {
-    let k = &classes[c.class as usize];
+fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, d: &mut Dissipation) -> ContactForce {
+    let k = &at.classes[c.class as usize];
     let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
         law::bonded::<P>(c, x, k, &along(at.vel, c, k, s), at.dt_s, d)

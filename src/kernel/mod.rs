@@ -15,6 +15,7 @@ pub mod build;
 pub mod checkpoint;
 pub mod contacts;
 pub mod detect;
+pub mod bonds4;
 pub mod energy;
 pub mod forces;
 pub mod integrate;
@@ -134,6 +135,10 @@ pub struct Model {
     /// adds each force to its two elements as it goes and, without this, stores no copy (the
     /// copy was 1.3 MB written per step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
+    /// Take runs of four intact bonds through the bond law four at a time where the law parts
+    /// and the processor allow (`bonds4`; the same bits as one at a time). Off only to measure
+    /// what it gains.
+    pub four_lanes: bool,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
@@ -206,6 +211,7 @@ impl Model {
             partial: &mut s.diss_partial,
             sums: if parallel { None } else { Some(&mut s.contact_sums[..]) },
             record: parallel || self.record_contact_forces,
+            four_lanes: self.four_lanes,
         };
         self.parts.dispatch(stage);
         for d in &s.diss_partial {
@@ -333,6 +339,7 @@ impl Model {
             partial: &mut partial,
             sums: None,
             record: true,
+            four_lanes: self.four_lanes,
         };
         Parts { damping: false, ..self.parts }.dispatch(stage);
         let s = &self.scratch;
