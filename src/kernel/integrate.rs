@@ -221,6 +221,23 @@ fn too_fast(v: [f64; 3], radius_m: f64, limit2: f64) -> bool {
     !(v[0] * v[0] + v[1] * v[1] + spin * spin <= limit2)
 }
 
+/// The undamped central-difference update of free elements with no external force, over the
+/// components of their `[x, y, θ]` triples as flat arrays: each contact sum `sum` becomes the
+/// force `force` and is zeroed, v += Δt·F/m, x += Δt·v. The same operations in the same order
+/// as the general loop's (whose 1.0·v is v exactly), so the same bits.
+#[inline(always)]
+fn free_undamped(dt_s: f64, inv_mass: &[f64], sum: &mut [f64], force: &mut [f64], vel: &mut [f64], pos: &mut [f64]) {
+    let n = sum.len();
+    let (inv_mass, force, vel, pos) = (&inv_mass[..n], &mut force[..n], &mut vel[..n], &mut pos[..n]);
+    for q in 0..n {
+        let f = std::mem::take(&mut sum[q]);
+        force[q] = f;
+        let v = vel[q] + dt_s * f * inv_mass[q] + 0.0;
+        vel[q] = v;
+        pos[q] += dt_s * v;
+    }
+}
+
 fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
     &a[base..base + n]
 }
@@ -247,6 +264,22 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             (cut(&el.motion, base, n), cut(&el.load, base, n), cut(&el.body, base, n), cut(&el.prescribed, base, n), cut(rebuild_pos, base, n));
         let (vs, fs) = (&mut vs[..n], &mut fs[..n]);
         let (mut bad, mut drifted) = (false, false);
+        if !DAMPED && !EXTERNAL && ss.len() == n && motion.iter().all(|&g| g == 0) {
+            // Free elements, no damping or external force, the contact sums made by stage 1:
+            // the update of the general loop below, component by component over flat arrays
+            // (it vectorises), then its checks.
+            free_undamped(p.dt_s, cut(&el.inv_mass_3, base, n).as_flattened(), ss.as_flattened_mut(), fs.as_flattened_mut(), vs.as_flattened_mut(), ps.as_flattened_mut());
+            for o in 0..n {
+                bad |= too_fast(vs[o], radius[o], limit2);
+                let (dx, dy) = (ps[o][0] - refs[o][0], ps[o][1] - refs[o][1]);
+                drifted |= dx * dx + dy * dy > margin[o] * margin[o];
+            }
+            r.drifted = drifted;
+            if bad {
+                r.first_bad = base + vs.iter().zip(radius).position(|(&v, &r)| too_fast(v, r, limit2)).expect("an element was too fast");
+            }
+            return r;
+        }
         for o in 0..n {
             let (e, x) = (base + o, &mut ps[o]);
             let summed = ss.get_mut(o).map(std::mem::take);

@@ -26,6 +26,10 @@ pub struct Elements {
     pub inv_mass: Vec<f64>,
     /// 1/inertia, 1/(kg·m²).
     pub inv_inertia: Vec<f64>,
+    /// [1/mass 1/kg, 1/mass 1/kg, 1/inertia 1/(kg·m²)]: the inverse of each component of an
+    /// `[x, y, θ]` triple, so that a free element's update runs over the components as one
+    /// flat array (`integrate`).
+    pub inv_mass_3: Vec<[f64; 3]>,
     /// Prescribed degrees of freedom: bit 0 x, bit 1 y, bit 2 rotation (0: free element).
     pub prescribed: Vec<u8>,
     /// Kind (material × radius) index: selects the contact class of new contacts.
@@ -61,6 +65,7 @@ impl Elements {
         self.inertia.push(inertia_kg_m2);
         self.inv_mass.push(1.0 / mass_kg);
         self.inv_inertia.push(1.0 / inertia_kg_m2);
+        self.inv_mass_3.push([1.0 / mass_kg, 1.0 / mass_kg, 1.0 / inertia_kg_m2]);
         self.kind.push(kind);
         self.body.push(body);
         self.motion.push(0);
