@@ -105,3 +105,25 @@ fn recording_contact_forces_on_one_thread_changes_no_bit_and_gives_the_forces_th
     assert!(forces_serial.iter().any(|&b| b != 0), "no contact carried a force");
     assert!(forces_serial == forces_parallel, "the recorded forces differ from the parallel stages'");
 }
+
+#[test]
+fn held_ends_give_the_same_bits_on_one_thread_and_on_the_pool() {
+    // Every row has a kinematic element at each end, so on one thread the motion stage takes
+    // runs of free elements over flat arrays between them and the general update for the held
+    // ones; the pool's motion stage gathers and updates element by element.
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| {
+            let mut m = common::impact::held_ends();
+            if threads == 1 {
+                m.threading = demsweep::kernel::Threading::Serial;
+            }
+            m.run_steps(1000).unwrap();
+            let held_still = m.el.motion.iter().zip(&m.state.vel).all(|(&g, v)| g == 0 || *v == [0.0; 3]);
+            (common::impact::state_bits(&m), m.state.ledger.bonds_broken(), held_still)
+        })
+    };
+    let (serial, broken, still) = run(1);
+    assert!(broken > 50 && still, "{broken} bonds broken; held elements still: {still}");
+    assert!(run(2).0 == serial, "the pool differs from one thread with held elements");
+}

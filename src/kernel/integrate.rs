@@ -264,23 +264,31 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             (cut(&el.motion, base, n), cut(&el.load, base, n), cut(&el.body, base, n), cut(&el.prescribed, base, n), cut(rebuild_pos, base, n));
         let (vs, fs) = (&mut vs[..n], &mut fs[..n]);
         let (mut bad, mut drifted) = (false, false);
-        if !DAMPED && !EXTERNAL && ss.len() == n && motion.iter().all(|&g| g == 0) {
-            // Free elements, no damping or external force, the contact sums made by stage 1:
-            // the update of the general loop below, component by component over flat arrays
-            // (it vectorises), then its checks.
-            free_undamped(p.dt_s, cut(&el.inv_mass_3, base, n).as_flattened(), ss.as_flattened_mut(), fs.as_flattened_mut(), vs.as_flattened_mut(), ps.as_flattened_mut());
-            for o in 0..n {
-                bad |= too_fast(vs[o], radius[o], limit2);
-                let (dx, dy) = (ps[o][0] - refs[o][0], ps[o][1] - refs[o][1]);
-                drifted |= dx * dx + dy * dy > margin[o] * margin[o];
+        // Free elements with no damping or external force, their contact sums made by stage 1:
+        // runs of them take the update of the general loop below component by component over
+        // flat arrays (it vectorises), then its checks.
+        let flat = !DAMPED && !EXTERNAL && ss.len() == n;
+        let mut o = 0;
+        while o < n {
+            let run = if flat { motion[o..].iter().position(|&g| g != 0).unwrap_or(n - o) } else { 0 };
+            if run > 0 {
+                let (a, b) = (o, o + run);
+                free_undamped(
+                    p.dt_s,
+                    cut(&el.inv_mass_3, base + a, run).as_flattened(),
+                    ss[a..b].as_flattened_mut(),
+                    fs[a..b].as_flattened_mut(),
+                    vs[a..b].as_flattened_mut(),
+                    ps[a..b].as_flattened_mut(),
+                );
+                for q in a..b {
+                    bad |= too_fast(vs[q], radius[q], limit2);
+                    let (dx, dy) = (ps[q][0] - refs[q][0], ps[q][1] - refs[q][1]);
+                    drifted |= dx * dx + dy * dy > margin[q] * margin[q];
+                }
+                o = b;
+                continue;
             }
-            r.drifted = drifted;
-            if bad {
-                r.first_bad = base + vs.iter().zip(radius).position(|(&v, &r)| too_fast(v, r, limit2)).expect("an element was too fast");
-            }
-            return r;
-        }
-        for o in 0..n {
             let (e, x) = (base + o, &mut ps[o]);
             let summed = ss.get_mut(o).map(std::mem::take);
             let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(e, contacts, summed, mass[o], load[o], drive, p.gravity_mps2);
@@ -339,6 +347,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             bad |= too_fast(v1, radius[o], limit2);
             let (dx, dy) = (x[0] - refs[o][0], x[1] - refs[o][1]);
             drifted |= dx * dx + dy * dy > margin[o] * margin[o];
+            o += 1;
         }
         r.drifted = drifted;
         if bad {

@@ -25,7 +25,17 @@ pub fn damped_at(alpha_per_s: f64, beta_s: f64, dt_s: f64) -> Model {
     with(Some(dt_s), alpha_per_s, beta_s)
 }
 
+/// The model with both ends of the target held (every dof, zero velocity), as the peers' beam
+/// is: every row of the lattice then has a kinematic element at each end.
+pub fn held_ends() -> Model {
+    build(None, 0.0, 0.0, true)
+}
+
 fn with(dt_s: Option<f64>, alpha_per_s: f64, beta_s: f64) -> Model {
+    build(dt_s, alpha_per_s, beta_s, false)
+}
+
+fn build(dt_s: Option<f64>, alpha_per_s: f64, beta_s: f64, held: bool) -> Model {
     let r = 0.004;
     let mut b = ModelBuilder::new(Plane::Strain, 0.05);
     let mut concrete = super::plate_concrete(FailureCriterion::StrengthEnergy);
@@ -38,6 +48,11 @@ fn with(dt_s: Option<f64>, alpha_per_s: f64, beta_s: f64) -> Model {
     let projectile = lattice::close_packed(&Rect { x_min_m: 0.18, x_max_m: 0.22, y_min_m: 0.1205, y_max_m: 0.2 }, r).unwrap();
     b.add_body("target", &target, Arrangement::ClosePacked, c, &[], [0.0; 3]);
     b.add_body("projectile", &projectile, Arrangement::ClosePacked, s, &[], [0.0, -250.0, 0.0]);
+    if held {
+        let ends: Vec<usize> = (0..target.centres.len()).filter(|&e| target.centres[e][0] < 0.01 || target.centres[e][0] > 0.39).collect();
+        assert!(ends.len() > 20, "{} held elements", ends.len());
+        b.add_motion(demsweep::kernel::boundary::MotionGroup::all("ends", [0.0; 3], demsweep::kernel::boundary::Profile::Constant), &ends);
+    }
     if let Some(dt_s) = dt_s {
         b.step = StepChoice::Fixed { dt_s };
     }
