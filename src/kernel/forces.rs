@@ -55,19 +55,14 @@ impl law::PartsVisitor for Stage<'_> {
         let at = &StepInput { pos, vel, dt_s, classes };
         let four = four_lanes && bonds4_apply::<P>();
         match sums {
-            None if four => {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: `bonds4_apply` checked that the processor has AVX.
-                unsafe {
-                    parallel_avx::<P>(at, list, extra, force, partial)
-                }
-            }
+            // `four` only where `bonds4_apply` found AVX.
+            None if four => parallel::<P, true>(at, list, extra, force, partial),
             None => parallel::<P, false>(at, list, extra, force, partial),
             // The serial loop compiled with and without the per-contact store: no branch per
             // contact on an observable the run does not ask for.
             Some(sums) => match (record, four) {
                 #[cfg(target_arch = "x86_64")]
-                // SAFETY: as above.
+                // SAFETY: `bonds4_apply` checked that the processor has AVX.
                 (true, true) => unsafe { scatter_avx::<P, true>(at, list, extra, force, partial, sums) },
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: as above.
@@ -103,7 +98,12 @@ struct StepInput<'a> {
 fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contact], extra: &mut [Extra], force: &mut [ContactForce], partial: &mut [Dissipation]) {
     let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
         *d = Dissipation::default();
-        each::<P, FOUR>(at, cs, xs, d, |k, _, f| fs[k] = *f);
+        #[cfg(target_arch = "x86_64")]
+        if FOUR {
+            // SAFETY: FOUR is set only when the processor has AVX.
+            return unsafe { chunk_avx::<P>(at, cs, xs, fs, d) };
+        }
+        each::<P, false>(at, cs, xs, d, |k, _, f| fs[k] = *f);
     };
     let chunks = list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut());
     if P::EXTRA {
@@ -113,14 +113,16 @@ fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contac
     }
 }
 
-/// [`parallel`] compiled for AVX, with the four-bond groups.
+/// One chunk of [`parallel`] compiled for AVX, with the four-bond groups. (A function of its
+/// own: the closures of `parallel` are compiled without AVX, in which the lanes' intrinsics
+/// would be calls — 0.27× the one-thread speed on two threads, as first built.)
 ///
 /// # Safety
 /// The processor must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn parallel_avx<P: PartSet>(at: &StepInput<'_>, list: &mut [Contact], extra: &mut [Extra], force: &mut [ContactForce], partial: &mut [Dissipation]) {
-    parallel::<P, true>(at, list, extra, force, partial)
+unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], fs: &mut [ContactForce], d: &mut Dissipation) {
+    each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
 }
 
 /// One thread: each contact's force added to its two elements as it goes (and stored in

@@ -118,26 +118,7 @@ pub fn rigid_frames(el: &Elements, pos: &[[f64; 3]], vel: &[[f64; 3]], bodies: u
 /// `summed` when stage 1 made it, else gathered here in the adjacency's fixed order.
 #[inline(always)]
 fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, summed: Option<[f64; 3]>, mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
-    let [fx, fy, tz] = match summed {
-        Some(summed) => summed,
-        None => {
-            let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
-            let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
-            for &a in &contacts.adj[s..t] {
-                let cf = &contacts.force[(a >> 1) as usize];
-                if a & 1 == 0 {
-                    fx += cf.fx;
-                    fy += cf.fy;
-                    tz += cf.ti;
-                } else {
-                    fx -= cf.fx;
-                    fy -= cf.fy;
-                    tz += cf.tj;
-                }
-            }
-            [fx, fy, tz]
-        }
-    };
+    let [fx, fy, tz] = summed.unwrap_or_else(|| gather(e, contacts));
     if !EXTERNAL {
         return ([fx, fy, tz], [0.0, 0.0]);
     }
@@ -148,6 +129,27 @@ fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, summed: Opti
         ey += l[1];
     }
     ([fx + ex, fy + ey, tz], [ex, ey])
+}
+
+/// The contact forces on element `e` [Fx N, Fy N, T N·m], summed over its adjacency in its
+/// fixed order from zero.
+#[inline(always)]
+fn gather(e: usize, contacts: &Contacts) -> [f64; 3] {
+    let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
+    let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
+    for &a in &contacts.adj[s..t] {
+        let cf = &contacts.force[(a >> 1) as usize];
+        if a & 1 == 0 {
+            fx += cf.fx;
+            fy += cf.fy;
+            tz += cf.ti;
+        } else {
+            fx -= cf.fx;
+            fy -= cf.fy;
+            tz += cf.tj;
+        }
+    }
+    [fx, fy, tz]
 }
 
 /// Forces of every element for the current contact forces (no motion), as `advance` would see them.
@@ -267,6 +269,17 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         // Free elements with no damping or external force, their contact sums made by stage 1:
         // runs of them take the update of the general loop below component by component over
         // flat arrays (it vectorises), then its checks.
+        // On the pool, stage 1 made no sums: gather them here first (the same sums as
+        // `total_force` gathers), so that the flat update serves the pool too.
+        let mut gathered = [[0.0f64; 3]; CHUNK];
+        let ss = if !DAMPED && !EXTERNAL && ss.is_empty() {
+            for (o, g) in gathered[..n].iter_mut().enumerate() {
+                *g = gather(base + o, contacts);
+            }
+            &mut gathered[..n]
+        } else {
+            ss
+        };
         let flat = !DAMPED && !EXTERNAL && ss.len() == n;
         let mut o = 0;
         while o < n {
