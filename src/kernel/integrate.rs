@@ -266,11 +266,10 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             (cut(&el.motion, base, n), cut(&el.load, base, n), cut(&el.body, base, n), cut(&el.prescribed, base, n), cut(rebuild_pos, base, n));
         let (vs, fs) = (&mut vs[..n], &mut fs[..n]);
         let (mut bad, mut drifted) = (false, false);
-        // Free elements with no damping or external force, their contact sums made by stage 1:
-        // runs of them take the update of the general loop below component by component over
-        // flat arrays (it vectorises), then its checks.
-        // On the pool, stage 1 made no sums: gather them here first (the same sums as
-        // `total_force` gathers), so that the flat update serves the pool too.
+        // Free elements with no damping or external force: runs of them take the update of the
+        // general loop below component by component over flat arrays (it vectorises), then its
+        // checks. It reads the contact sums: stage 1 made them on one thread; on the pool they
+        // are gathered here first, the same sums as `total_force` gathers.
         let mut gathered = [[0.0f64; 3]; CHUNK];
         let ss = if !DAMPED && !EXTERNAL && ss.is_empty() {
             for (o, g) in gathered[..n].iter_mut().enumerate() {
