@@ -242,10 +242,16 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
             from += L;
         }
     }
-    for (k, c) in cs.iter_mut().enumerate().skip(from) {
-        let x = if P::EXTRA { &mut xs[k] } else { &mut scratch };
-        let f = one::<P>(at, c, x, d);
-        sink(k, c, &f);
+    if P::EXTRA {
+        for (k, (c, x)) in cs.iter_mut().zip(xs.iter_mut()).enumerate().skip(from) {
+            let f = one::<P>(at, c, x, d);
+            sink(k, c, &f);
+        }
+    } else {
+        for (k, c) in cs.iter_mut().enumerate().skip(from) {
+            let f = one::<P>(at, c, &mut scratch, d);
+            sink(k, c, &f);
+        }
     }
 }
 
