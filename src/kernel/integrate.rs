@@ -270,8 +270,9 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         // general loop below component by component over flat arrays (it vectorises), then its
         // checks. It reads the contact sums: stage 1 made them on one thread; on the pool they
         // are gathered here first, the same sums as `total_force` gathers.
-        let mut gathered = [[0.0f64; 3]; CHUNK];
+        let mut gathered: [[f64; 3]; CHUNK];
         let ss = if !DAMPED && !EXTERNAL && ss.is_empty() {
+            gathered = [[0.0; 3]; CHUNK];
             for (o, g) in gathered[..n].iter_mut().enumerate() {
                 *g = gather(base + o, contacts);
             }
