@@ -7,8 +7,8 @@ use demsweep::kernel::contacts::Contact;
 use demsweep::kernel::law::{self, Dissipation, Extra, With};
 use demsweep::kernel::{Threading, bonds4, forces};
 
-/// No optional part: the set the four-lane path serves (with friction, which only frictional
-/// contacts read).
+/// No optional part. The lanes serve it and friction on (friction changes only frictional
+/// contacts, so a bond's law is this one either way).
 type Plain = With<false, false, false, false>;
 
 #[test]
