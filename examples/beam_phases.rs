@@ -1,0 +1,102 @@
+//! Where the peers' beam spends its steps: per window of steps, the kinds of contact the
+//! contact stage meets and the time per step on one thread. The beam breaks three quarters of
+//! its bonds in 5 000 steps; the four-bond lanes serve only runs of four intact bonds, so the
+//! step slows as it cracks. This prints by how much, and why (issue [6/6]).
+//!
+//! usage: cargo run --release --example beam_phases -- [SCENE] [WINDOW_STEPS] [REPEATS]
+//!   SCENE         default ../shared/peers/demsweep/beam.toml
+//!   WINDOW_STEPS  default 500 (of the scene's 5 000)
+//!   REPEATS       default 3: each window is timed on that many copies of the model at its
+//!                 start (the median is printed), so the machine's spells hit every window alike
+//!
+//! Columns: intact bonds, the share of them in runs of four of one class (what the lanes can
+//! take), frictional pairs apart with nothing to forget (settled in line), frictional pairs
+//! touching or with a shear spring (the out-of-line law), and ms per step. The copies must end
+//! bitwise equal (checked): the timing does not change the run.
+
+use std::time::Instant;
+
+use demsweep::kernel::Threading;
+use demsweep::kernel::contacts::{Bond, Contact};
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let scene = args.first().map_or("../shared/peers/demsweep/beam.toml", String::as_str);
+    let window: u64 = args.get(1).map_or(500, |s| s.parse().expect("WINDOW_STEPS"));
+    let repeats: usize = args.get(2).map_or(3, |s| s.parse().expect("REPEATS"));
+    let built = demsweep::scene::Scene::from_file(std::path::Path::new(scene)).expect("scene").build().expect("build");
+    let total = (built.duration_s / built.model.dt_s()).ceil() as u64;
+    let mut m = built.model;
+    m.threading = Threading::Serial;
+    println!("{:>11} {:>9} {:>8} {:>12} {:>8} {:>10} {:>9}", "steps", "contacts", "intact", "in_runs_of_4", "apart", "touching", "ms/step");
+    let mut from = 0;
+    while from < total {
+        let n = window.min(total - from);
+        let census = Census::of(&m);
+        let mut times = Vec::new();
+        let mut end = None;
+        for _ in 0..repeats.max(1) {
+            let mut c = m.clone();
+            let t = Instant::now();
+            c.run_steps(n).expect("step");
+            times.push(t.elapsed().as_secs_f64() / n as f64);
+            let bits: Vec<u64> = c.state.pos.iter().chain(&c.state.vel).flatten().map(|v| v.to_bits()).collect();
+            assert!(end.as_ref().is_none_or(|(b, _)| *b == bits), "copies of one model ended apart");
+            end = Some((bits, c));
+        }
+        times.sort_by(f64::total_cmp);
+        let share = |k: u64| k as f64 / census.contacts as f64;
+        println!(
+            "{:>5}-{:<5} {:>9} {:>8.3} {:>12.3} {:>8.3} {:>10.3} {:>9.3}",
+            from,
+            from + n,
+            census.contacts,
+            share(census.intact),
+            share(census.in_runs),
+            share(census.apart),
+            share(census.touching),
+            times[times.len() / 2] * 1e3
+        );
+        m = end.expect("one copy at least").1;
+        from += n;
+    }
+}
+
+/// Contacts of a model by what the contact stage does with them.
+struct Census {
+    contacts: u64,
+    intact: u64,
+    /// Intact bonds in the aligned groups of four of one class the lanes take.
+    in_runs: u64,
+    /// Frictional pairs apart with no shear spring and their rest length back at r_i + r_j.
+    apart: u64,
+    /// The other frictional pairs.
+    touching: u64,
+}
+
+impl Census {
+    fn of(m: &demsweep::kernel::Model) -> Census {
+        let (cs, pos) = (&m.state.contacts.list, &m.state.pos);
+        let mut n = Census { contacts: cs.len() as u64, intact: 0, in_runs: 0, apart: 0, touching: 0 };
+        let in_run = |g: &[Contact]| g.iter().all(|c| c.bond == Bond::Intact && c.class == g[0].class);
+        // The lanes take aligned groups of four within each chunk of the contact stage.
+        for chunk in cs.chunks(demsweep::kernel::forces::CHUNK) {
+            n.in_runs += chunk.chunks_exact(4).filter(|g| in_run(g)).count() as u64 * 4;
+        }
+        for c in cs {
+            if c.bond == Bond::Intact {
+                n.intact += 1;
+                continue;
+            }
+            let (a, b) = (pos[c.i as usize], pos[c.j as usize]);
+            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+            let sum = m.classes[c.class as usize].radius_sum_m;
+            if c.ut_m == 0.0 && c.rest_m == sum && dx * dx + dy * dy >= c.rest_m * c.rest_m {
+                n.apart += 1;
+            } else {
+                n.touching += 1;
+            }
+        }
+        n
+    }
+}
