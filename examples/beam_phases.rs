@@ -9,15 +9,17 @@
 //!   REPEATS       default 3: each window is timed on that many copies of the model at its
 //!                 start (the median is printed), so the machine's spells hit every window alike
 //!
-//! Columns: intact bonds, the share of them in runs of four of one class (what the lanes can
-//! take), frictional pairs apart with nothing to forget (settled in line), frictional pairs
-//! touching or with a shear spring (the out-of-line law), and ms per step. The copies must end
+//! Columns, each a share of all contacts at the window's start: intact bonds, intact bonds in
+//! the aligned groups of four the lanes take (`bonds4::eligible`), frictional pairs apart with
+//! nothing to forget (settled in line), the other frictional pairs (touching, or holding a shear
+//! spring: the out-of-line law); then ms per step. The copies must end
 //! bitwise equal (checked): the timing does not change the run.
 
 use std::time::Instant;
 
 use demsweep::kernel::Threading;
-use demsweep::kernel::contacts::{Bond, Contact};
+use demsweep::kernel::bonds4;
+use demsweep::kernel::contacts::Bond;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -78,11 +80,12 @@ impl Census {
     fn of(m: &demsweep::kernel::Model) -> Census {
         let (cs, pos) = (&m.state.contacts.list, &m.state.pos);
         let mut n = Census { contacts: cs.len() as u64, intact: 0, in_runs: 0, apart: 0, touching: 0 };
-        let in_run = |g: &[Contact]| g.iter().all(|c| c.bond == Bond::Intact && c.class == g[0].class);
         // The lanes take aligned groups of four within each chunk of the contact stage.
         for chunk in cs.chunks(demsweep::kernel::forces::CHUNK) {
-            n.in_runs += chunk.chunks_exact(4).filter(|g| in_run(g)).count() as u64 * 4;
+            let groups = chunk.chunks_exact(bonds4::LANES).filter(|&g| bonds4::eligible(g.try_into().expect("a group of four")));
+            n.in_runs += (groups.count() * bonds4::LANES) as u64;
         }
+        // The contact stage's in-line test (`forces::apart_with_nothing_to_forget`, private).
         for c in cs {
             if c.bond == Bond::Intact {
                 n.intact += 1;
