@@ -3,9 +3,9 @@
 
 mod common;
 
-use demsweep::kernel::contacts::Contact;
+use demsweep::kernel::contacts::{Bond, Contact};
 use demsweep::kernel::law::{self, Dissipation, Extra, With};
-use demsweep::kernel::{Threading, bonds4, forces};
+use demsweep::kernel::{Threading, bonds4, forces, geometry, mixed4};
 
 /// No optional part. The lanes serve it and friction on (friction changes only frictional
 /// contacts, so a bond's law is this one either way).
@@ -43,7 +43,7 @@ fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
         }
         let k = &m.classes[cs[0].class as usize];
         // SAFETY: the processor has AVX (checked above).
-        let got = unsafe { bonds4::elastic(&pos, &vel, &cs, k, dt_s) };
+        let got = unsafe { bonds4::elastic(&geometry::four(&pos, &cs), &vel, &cs, k, dt_s) };
         let mut d = Dissipation::default();
         let scalar: Vec<_> = cs.iter().map(|c| {
             let mut c = *c;
@@ -99,4 +99,103 @@ fn a_run_with_four_bonds_at_once_is_bitwise_the_run_one_at_a_time() {
         assert!(impact_bits(true, threads, steps).0 == scalar, "four lanes on {threads} thread(s) differ from one bond at a time");
     }
     assert!(impact_bits(false, 2, steps).0 == scalar, "the pool one bond at a time differs from one thread");
+}
+
+/// Friction on, no other optional part: the parts of the small impact, whose cracked target
+/// mixes bonds and frictional pairs in every group.
+type Friction = With<true, false, false, false>;
+
+/// One contact through the scalar law, as the contact loop takes it.
+fn scalar_one(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &mut Contact, k: &law::ContactClass, dt_s: f64, d: &mut Dissipation) -> demsweep::kernel::contacts::ContactForce {
+    match forces::kinematics(pos, vel, c, k) {
+        Ok(g) if c.bond == Bond::Intact => law::bonded::<Friction>(c, &mut Extra::new(0.0), k, &g, dt_s, d),
+        Ok(g) => law::friction::touching::<Friction>(c, k, &g, dt_s, d),
+        Err(d2_m2) => {
+            law::friction::apart(c, k, d2_m2, d);
+            Default::default()
+        }
+    }
+}
+
+#[test]
+fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
+    if !bonds4::available() {
+        eprintln!("this processor has no AVX: the four-lane path is never taken");
+        return;
+    }
+    let mut m = common::impact::model();
+    assert_eq!(m.parts, law::Parts { friction: true, ..Default::default() });
+    // Mid-impact: the target cracked, bonds and frictional pairs mixed along the list.
+    m.four_lanes = false;
+    m.run_steps(1500).unwrap();
+    // Then every branch of both laws exercised: the block strained in x from −3 to 1.5 times a
+    // bond's plateau strain (cracks closed; some groups refused), fast random velocities (pairs that
+    // touch slide), and the frictional pairs given shear springs, overlaps and rest lengths off
+    // r_i + r_j (pairs that touch stick or slide, pairs that are apart forget).
+    let k0 = &m.classes[0];
+    let plateau_strain = k0.strength.normal_force_n / (k0.bond.kn_n_per_m * m.state.contacts.list[0].rest_m);
+    let x_max = m.state.pos.iter().map(|p| p[0]).fold(0.0, f64::max);
+    let pos: Vec<[f64; 3]> = m.state.pos.iter().map(|p| [p[0] * (1.0 + plateau_strain * (4.5 * p[0] / x_max - 3.0)), p[1], p[2]]).collect();
+    let wobble = |e: usize| (e as f64 * 0.7548776662).fract() - 0.5;
+    let vel: Vec<[f64; 3]> = m.state.vel.iter().enumerate().map(|(e, v)| [v[0] + 50.0 * wobble(e), v[1] - 30.0 * wobble(e + 7), v[2] + 4e3 * wobble(e + 3)]).collect();
+    for (n, c) in m.state.contacts.list.iter_mut().enumerate().filter(|(_, c)| c.bond == Bond::Frictional) {
+        let (a, b) = (pos[c.i as usize], pos[c.j as usize]);
+        let d_m = (b[0] - a[0]).hypot(b[1] - a[1]);
+        match n % 4 {
+            0 => c.ut_m = 1e-7 * wobble(n),
+            1 => (c.rest_m, c.ut_m) = (d_m * (1.0 + 1e-3 * wobble(n).abs()), 1e-8 * wobble(n + 1)),
+            2 => c.rest_m = c.rest_m.min(d_m) * (1.0 - 0.02 * wobble(n).abs()),
+            _ => {}
+        }
+    }
+    let (pos, vel, dt_s) = (&pos, &vel, m.dt_s());
+    let (mut taken, mut refused, mut mixed, mut sliding, mut forgetting) = (0, 0, 0, 0, 0);
+    for g in m.state.contacts.list.chunks_exact(bonds4::LANES) {
+        let cs: [Contact; bonds4::LANES] = g.try_into().unwrap();
+        if !mixed4::one_class(&cs) {
+            continue;
+        }
+        let k = &m.classes[cs[0].class as usize];
+        // The ledger is not at zero: the lanes add to a running sum as the loop does.
+        let d0 = Dissipation { friction_j: 0.125, ..Default::default() };
+        let (mut lanes, mut d_lanes) = (cs, d0);
+        // SAFETY: the processor has AVX (checked above).
+        let got = unsafe { mixed4::evaluate::<Friction>(&geometry::four(pos, &cs), vel, &mut lanes, k, dt_s, &mut d_lanes) };
+        let (mut scalar, mut d) = (cs, d0);
+        let mut lane_w = [0.0; bonds4::LANES];
+        let forces: Vec<_> = scalar.iter_mut().enumerate().map(|(l, c)| {
+            let before = d.friction_j;
+            let f = scalar_one(pos, vel, c, k, dt_s, &mut d);
+            lane_w[l] = d.friction_j - before;
+            f
+        }).collect();
+        let elastic = d.plastic_work_j == 0.0 && d.broken == 0 && scalar.iter().zip(&cs).all(|(c, c0)| c.dp_m == c0.dp_m);
+        match got {
+            Some(f) => {
+                assert!(elastic, "the mixed lanes took a group whose bonds the scalar law did not keep elastic: {cs:?}");
+                for l in 0..bonds4::LANES {
+                    let (a, b) = (&f[l], &forces[l]);
+                    assert_eq!([a.fx, a.fy, a.ti, a.tj].map(f64::to_bits), [b.fx, b.fy, b.ti, b.tj].map(f64::to_bits), "force, lane {l} of {cs:?}");
+                }
+                assert_eq!(lanes, scalar, "history of {cs:?}");
+                assert_eq!(lanes.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]), scalar.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]));
+                assert_eq!(d_lanes.friction_j.to_bits(), d.friction_j.to_bits(), "friction booked for {cs:?}");
+                let kinds = cs.iter().filter(|c| c.bond == Bond::Intact).count();
+                mixed += (kinds > 0 && kinds < bonds4::LANES) as usize;
+                for (l, c) in cs.iter().enumerate() {
+                    let apart = forces::kinematics(pos, vel, c, k).is_err();
+                    sliding += (!apart && lane_w[l] != 0.0) as usize;
+                    forgetting += (apart && (c.ut_m != 0.0 || c.rest_m != k.radius_sum_m)) as usize;
+                }
+                taken += 1;
+            }
+            None => {
+                assert!(!elastic, "the mixed lanes refused a group whose bonds the scalar law kept elastic: {cs:?}");
+                assert_eq!((lanes, d_lanes.friction_j.to_bits()), (cs, d0.friction_j.to_bits()), "a refused group must change nothing");
+                refused += 1;
+            }
+        }
+    }
+    eprintln!("{taken} groups taken ({mixed} of bonds and frictional pairs; {sliding} sliding and {forgetting} forgetting pairs), {refused} refused");
+    assert!(taken > 100 && mixed > 20 && sliding > 5 && forgetting > 5, "every kind must occur: {taken} taken, {mixed} mixed, {sliding} sliding, {forgetting} forgetting");
 }

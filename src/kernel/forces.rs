@@ -9,12 +9,16 @@
 //! sums are bitwise the same either way.
 //!
 //! The loop is compiled once per set of optional law parts (`law::PartSet`). Where the part
-//! set allows it and the processor has AVX, runs of four intact bonds go through the bond law's
-//! elastic branch four at a time ([`bonds4`]), with the same bits.
+//! set allows it and the processor has AVX, the contacts go four at a time, with the same bits:
+//! runs of four intact bonds through the bond law's elastic branch ([`bonds4`]), any other four
+//! of one class through every kind's law at once ([`mixed4`]); what neither takes (a bond
+//! leaving the elastic branch, classes mixed) one at a time.
 
 use rayon::prelude::*;
 
-use super::bonds4;
+use super::geometry::{self, Geometry, Separation, separation};
+use super::{bonds4, mixed4};
+
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
@@ -207,7 +211,8 @@ impl Scatter<'_> {
 /// Every contact of `cs` (extra slots `xs`, empty unless the parts keep them) evaluated, its
 /// dissipation added to `d`, and `sink(index in cs, contact, force)` called in contact order.
 /// With `FOUR` (only in a function compiled for AVX), whole groups of four go through
-/// [`bonds4::elastic`] when they are intact bonds of one class, one by one otherwise.
+/// [`bonds4::elastic`] when they are intact bonds of one class, else through
+/// [`mixed4::evaluate`] when they are of one class, one by one when neither takes them.
 #[inline(always)]
 fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
     let mut scratch = Extra::new(0.0);
@@ -217,22 +222,38 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
         const L: usize = bonds4::LANES;
         while from + L <= cs.len() {
             let group: &mut [Contact; L] = (&mut cs[from..from + L]).try_into().unwrap();
-            // SAFETY: FOUR is set only by functions compiled for AVX, called only when the
-            // processor has it.
-            let elastic = if bonds4::eligible(group) {
-                unsafe { bonds4::elastic(at.pos, at.vel, group, &at.classes[group[0].class as usize], at.dt_s) }
-            } else {
-                None
-            };
-            if let Some(g) = elastic {
-                for (l, c) in group.iter_mut().enumerate() {
-                    c.ut_m = g.ut_m[l];
-                    sink(from + l, c, &g.force[l]);
+            let k = &at.classes[group[0].class as usize];
+            // SAFETY (here and below): FOUR is set only by functions compiled for AVX, called
+            // only when the processor has it.
+            let geo = unsafe { geometry::four(at.pos, group) };
+            let done = if bonds4::eligible(group) {
+                match unsafe { bonds4::elastic(&geo, at.vel, group, k, at.dt_s) } {
+                    Some(g) => {
+                        for (l, c) in group.iter_mut().enumerate() {
+                            c.ut_m = g.ut_m[l];
+                            sink(from + l, c, &g.force[l]);
+                        }
+                        // The scalar law books each elastic step's plastic work as 0 + 0: once
+                        // is the same sum.
+                        d.plastic_work_j += 0.0;
+                        true
+                    }
+                    None => false,
                 }
-                // The scalar law books each elastic step's plastic work as 0 + 0: once is the
-                // same sum.
-                d.plastic_work_j += 0.0;
+            } else if mixed4::one_class(group) {
+                match unsafe { mixed4::evaluate::<P>(&geo, at.vel, group, k, at.dt_s, d) } {
+                    Some(f) => {
+                        for (l, c) in group.iter().enumerate() {
+                            sink(from + l, c, &f[l]);
+                        }
+                        true
+                    }
+                    None => false,
+                }
             } else {
+                false
+            };
+            if !done {
                 for (l, c) in group.iter_mut().enumerate() {
                     let x = if P::EXTRA { &mut xs[from + l] } else { &mut scratch };
                     let f = one::<P>(at, c, x, d);
@@ -260,8 +281,8 @@ fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, d: &mut D
     let k = &at.classes[c.class as usize];
     let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
-        law::bonded::<P>(c, x, k, &along(at.vel, c, k, s), at.dt_s, d)
-    } else if apart_with_nothing_to_forget(c, k, s) {
+        law::bonded::<P>(c, x, k, &along(at.vel, c, k, geometry::of(s)), at.dt_s, d)
+    } else if apart_with_nothing_to_forget(c, k, s.d2_m2) {
         ContactForce::default()
     } else {
         frictional::<P>(at, c, k, s, d)
@@ -272,25 +293,26 @@ fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, d: &mut D
 /// `law::friction::apart` would change nothing. Most contacts of a fractured body are such;
 /// checked here, in line, they skip the call.
 #[inline(always)]
-fn apart_with_nothing_to_forget(c: &Contact, k: &ContactClass, s: Separation) -> bool {
-    c.ut_m == 0.0 && c.rest_m == k.radius_sum_m && apart(c, s)
+fn apart_with_nothing_to_forget(c: &Contact, k: &ContactClass, d2_m2: f64) -> bool {
+    c.ut_m == 0.0 && c.rest_m == k.radius_sum_m && apart(c, d2_m2)
 }
 
-/// A frictional pair that does not touch: its centres at least its rest length apart.
+/// A frictional pair at squared distance `d2_m2` that does not touch: its centres at least its
+/// rest length apart.
 #[inline(always)]
-fn apart(c: &Contact, s: Separation) -> bool {
-    s.d2_m2 >= c.rest_m * c.rest_m
+fn apart(c: &Contact, d2_m2: f64) -> bool {
+    d2_m2 >= c.rest_m * c.rest_m
 }
 
 /// A frictional contact, out of line: inlined beside the bond law it made the all-bonded loop
 /// 2.2× slower (the benchmark block: 25 → 11.5 ns per contact for the contact stage).
 #[inline(never)]
 fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass, s: Separation, d: &mut Dissipation) -> ContactForce {
-    if apart(c, s) {
+    if apart(c, s.d2_m2) {
         law::friction::apart(c, k, s.d2_m2, d);
         ContactForce::default()
     } else {
-        law::friction::touching::<P>(c, k, &along(at.vel, c, k, s), at.dt_s, d)
+        law::friction::touching::<P>(c, k, &along(at.vel, c, k, geometry::of(s)), at.dt_s, d)
     }
 }
 
@@ -299,36 +321,19 @@ fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass,
 #[inline(always)]
 pub fn kinematics(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass) -> Result<Kinematics, f64> {
     let s = separation(pos, c);
-    if c.bond == Bond::Frictional && apart(c, s) {
+    if c.bond == Bond::Frictional && apart(c, s.d2_m2) {
         return Err(s.d2_m2);
     }
-    Ok(along(vel, c, k, s))
+    Ok(along(vel, c, k, geometry::of(s)))
 }
 
-/// From i's centre to j's: (dx m, dy m) and its square length d2 (m²).
-#[derive(Clone, Copy)]
-struct Separation {
-    dx_m: f64,
-    dy_m: f64,
-    d2_m2: f64,
-}
-
+/// Relative velocity of a pair of geometry `g`.
 #[inline(always)]
-fn separation(pos: &[[f64; 3]], c: &Contact) -> Separation {
-    let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
-    let (dx_m, dy_m) = (pj[0] - pi[0], pj[1] - pi[1]);
-    Separation { dx_m, dy_m, d2_m2: dx_m * dx_m + dy_m * dy_m }
-}
-
-/// Geometry and relative velocity of a pair `s` apart.
-#[inline(always)]
-fn along(vel: &[[f64; 3]], c: &Contact, k: &ContactClass, s: Separation) -> Kinematics {
+fn along(vel: &[[f64; 3]], c: &Contact, k: &ContactClass, g: Geometry) -> Kinematics {
     let (i, j) = (c.i as usize, c.j as usize);
-    let dist = s.d2_m2.sqrt();
-    let inv = 1.0 / dist;
-    let (nx, ny) = (s.dx_m * inv, s.dy_m * inv);
     let (vi, vj) = (vel[i], vel[j]);
     let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
+    let (nx, ny, dist) = (g.nx, g.ny, g.d_m);
     let (li, lj) = (dist * k.lever_i, dist * k.lever_j);
     Kinematics { d_m: dist, nx, ny, vn_mps: dvx * nx + dvy * ny, vt_mps: -dvx * ny + dvy * nx - li * vi[2] - lj * vj[2], li_m: li, lj_m: lj }
 }

@@ -16,8 +16,10 @@ pub mod checkpoint;
 pub mod contacts;
 pub mod detect;
 pub mod bonds4;
+pub mod mixed4;
 pub mod energy;
 pub mod forces;
+pub mod geometry;
 pub mod integrate;
 pub mod law;
 pub mod neighbours;
@@ -135,9 +137,8 @@ pub struct Model {
     /// adds each force to its two elements as it goes and, without this, stores no copy (the
     /// copy was 1.3 MB written per step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
-    /// Take runs of four intact bonds through the bond law four at a time where the law parts
-    /// and the processor allow (`bonds4`; the same bits as one at a time). Off only to measure
-    /// what it gains.
+    /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
+    /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
     pub four_lanes: bool,
     // What stepping changes.
     /// The evolving state.
