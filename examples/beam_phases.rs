@@ -1,7 +1,9 @@
 //! Where the peers' beam spends its steps: per window of steps, the kinds of contact the
-//! contact stage meets and the time per step on one thread. The beam breaks three quarters of
-//! its bonds in 5 000 steps; the four-bond lanes serve only runs of four intact bonds, so the
-//! step slows as it cracks. This prints by how much, and why (issue [6/6]).
+//! contact stage meets and the time per step on one thread, with the four-contact lanes and one
+//! contact at a time. The beam breaks three quarters of its bonds in 5 000 steps: runs of four
+//! intact bonds go through `bonds4`, the other groups of one class (bonds and frictional pairs
+//! mixed at random as it cracks) through `mixed4`. This prints what each window holds and what
+//! the lanes gain there (issue [6/6]).
 //!
 //! usage: cargo run --release --example beam_phases -- [SCENE] [WINDOW_STEPS] [REPEATS]
 //!   SCENE         default ../shared/peers/demsweep/beam.toml
@@ -12,8 +14,9 @@
 //! Columns, each a share of all contacts at the window's start: intact bonds, intact bonds in
 //! the aligned groups of four the lanes take (`bonds4::eligible`), frictional pairs apart with
 //! nothing to forget (settled in line), the other frictional pairs (touching, or holding a shear
-//! spring: the out-of-line law); then ms per step. The copies must end
-//! bitwise equal (checked): the timing does not change the run.
+//! spring); then ms per step with the lanes, one contact at a time (`Model::four_lanes` off),
+//! and the ratio. The copies must end bitwise equal, with and without the lanes (checked): the
+//! timing does not change the run.
 
 use std::time::Instant;
 
@@ -30,26 +33,36 @@ fn main() {
     let total = (built.duration_s / built.model.dt_s()).ceil() as u64;
     let mut m = built.model;
     m.threading = Threading::Serial;
-    println!("{:>11} {:>9} {:>8} {:>12} {:>8} {:>10} {:>9}", "steps", "contacts", "intact", "in_runs_of_4", "apart", "touching", "ms/step");
+    println!(
+        "{:>11} {:>9} {:>8} {:>12} {:>8} {:>10} {:>9} {:>14} {:>6}",
+        "steps", "contacts", "intact", "in_runs_of_4", "apart", "touching", "ms/step", "one_at_a_time", "gain"
+    );
     let mut from = 0;
     while from < total {
         let n = window.min(total - from);
         let census = Census::of(&m);
-        let mut times = Vec::new();
+        // Lanes and one at a time alternate, so the machine's spells hit both alike.
+        let mut times = [Vec::new(), Vec::new()];
         let mut end = None;
         for _ in 0..repeats.max(1) {
-            let mut c = m.clone();
-            let t = Instant::now();
-            c.run_steps(n).expect("step");
-            times.push(t.elapsed().as_secs_f64() / n as f64);
-            let bits: Vec<u64> = c.state.pos.iter().chain(&c.state.vel).flatten().map(|v| v.to_bits()).collect();
-            assert!(end.as_ref().is_none_or(|(b, _)| *b == bits), "copies of one model ended apart");
-            end = Some((bits, c));
+            for (lanes, t) in [true, false].into_iter().zip(times.iter_mut()) {
+                let mut c = m.clone();
+                c.four_lanes = lanes;
+                let start = Instant::now();
+                c.run_steps(n).expect("step");
+                t.push(start.elapsed().as_secs_f64() / n as f64);
+                let bits: Vec<u64> = c.state.pos.iter().chain(&c.state.vel).flatten().map(|v| v.to_bits()).collect();
+                assert!(end.as_ref().is_none_or(|(b, _)| *b == bits), "copies of one model ended apart");
+                end = Some((bits, c));
+            }
         }
-        times.sort_by(f64::total_cmp);
+        let [lanes, scalar] = times.map(|mut t| {
+            t.sort_by(f64::total_cmp);
+            t[t.len() / 2] * 1e3
+        });
         let share = |k: u64| k as f64 / census.contacts as f64;
         println!(
-            "{:>5}-{:<5} {:>9} {:>8.3} {:>12.3} {:>8.3} {:>10.3} {:>9.3}",
+            "{:>5}-{:<5} {:>9} {:>8.3} {:>12.3} {:>8.3} {:>10.3} {:>9.3} {:>14.3} {:>6.2}",
             from,
             from + n,
             census.contacts,
@@ -57,7 +70,9 @@ fn main() {
             share(census.in_runs),
             share(census.apart),
             share(census.touching),
-            times[times.len() / 2] * 1e3
+            lanes,
+            scalar,
+            scalar / lanes
         );
         m = end.expect("one copy at least").1;
         from += n;
