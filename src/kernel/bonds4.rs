@@ -16,13 +16,12 @@
 //! ([`kinematics`], [`force`]) serve both.
 
 use super::contacts::{Bond, Contact, ContactForce};
+#[cfg(target_arch = "x86_64")]
+use super::geometry::{Four, lanes};
 use super::law::{ContactClass, rate};
 
 /// Contacts per group.
 pub const LANES: usize = 4;
-
-#[cfg(target_arch = "x86_64")]
-use super::geometry::{Four, lanes};
 
 /// A group's outcome when every bond stayed elastic, in contact order.
 pub struct Group {
@@ -54,8 +53,9 @@ pub fn eligible(cs: &[Contact; LANES]) -> bool {
     (k0 & 0xff == Bond::Intact as u32) & (key(&cs[1]) == k0) & (key(&cs[2]) == k0) & (key(&cs[3]) == k0)
 }
 
-/// The four bonds `cs` ([`eligible`], class `k`) of geometry `geo` (`geometry::Block`) at
-/// half-step velocities `vel` over `dt_s`: their forces and new shear springs if all four stay elastic, else None.
+/// The four bonds `cs` ([`eligible`], class `k`) of geometry `geo` (`geometry::four`) at
+/// half-step velocities `vel` over `dt_s`: their forces and new shear springs if all four stay
+/// elastic, else None.
 /// The contacts are not written (the caller stores `ut_m`).
 ///
 /// # Safety
@@ -68,30 +68,53 @@ pub unsafe fn elastic(geo: &Four, vel: &[[f64; 3]], cs: &[Contact; LANES], k: &C
     // SAFETY: AVX is there (the caller's contract); the rest is arithmetic and bounds-checked
     // indexing.
     unsafe {
-        let splat = _mm256_set1_pd;
         let g = kinematics(geo, vel, cs, k);
-        let (dist, vt) = (g.dist, g.vt);
-
-        // The elastic branch (`law::bonded`, `normal::bonded`, `tangential::capped_spring`,
-        // `failure::breaks`).
-        let xi = rate::STATIC[2];
-        let dp = lanes!(cs, |c| c.dp_m);
-        let f_n = _mm256_mul_pd(splat(k.bond.kn_n_per_m), _mm256_sub_pd(_mm256_sub_pd(dist, lanes!(cs, |c| c.rest_m)), dp));
-        let ut = _mm256_add_pd(lanes!(cs, |c| c.ut_m), _mm256_mul_pd(vt, splat(dt_s)));
-        let f_t = _mm256_mul_pd(splat(k.bond.kt_n_per_m), ut);
-        let below_plateau = _mm256_cmp_pd::<_CMP_LE_OQ>(f_n, splat(k.strength.normal_force_n * xi));
-        let below_cap = _mm256_cmp_pd::<_CMP_LE_OQ>(_mm256_andnot_pd(splat(-0.0), f_t), splat(k.strength.shear_force_n * xi));
-        let holds = _mm256_cmp_pd::<_CMP_NGT_UQ>(dp, splat(k.strength.plastic_opening_at_break_m));
-        if _mm256_movemask_pd(_mm256_and_pd(_mm256_and_pd(below_plateau, below_cap), holds)) != 0b1111 {
+        let b = elastic_branch(&g, cs, k, dt_s);
+        if _mm256_movemask_pd(b.elastic) != 0b1111 {
             return None;
         }
-
-        Some(Group { force: force(&g, f_n, f_t, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))), ut_m: out(ut) })
+        Some(Group { force: force(&g, b.f_n, b.f_t, _mm256_castsi256_pd(_mm256_set1_epi64x(-1))), ut_m: out(b.ut_m) })
     }
 }
 
+/// The bond law's elastic branch on four lanes (`law::bonded`, `normal::bonded`,
+/// `tangential::capped_spring`, `failure::breaks`, no optional part).
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Branch4 {
+    /// Normal force Kn (d − d0 − δ_p), N (tension positive).
+    pub f_n: std::arch::x86_64::__m256d,
+    /// Shear force Kt u_t, N.
+    pub f_t: std::arch::x86_64::__m256d,
+    /// The trial shear spring u_t + v_t Δt, m (a frictional pair's increment too).
+    pub ut_m: std::arch::x86_64::__m256d,
+    /// All bits set in the lanes where the bond stays elastic (below both plateaus, holding).
+    pub elastic: std::arch::x86_64::__m256d,
+}
 
-/// Geometry and relative velocity of four contacts, lane l contact l: `forces::separation` and
+/// [`Branch4`] of the four contacts `cs` (class `k`) at `g` over `dt_s`, taken as bonds.
+///
+/// # Safety
+/// As [`elastic`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) unsafe fn elastic_branch(g: &Kinematics4, cs: &[Contact; LANES], k: &ContactClass, dt_s: f64) -> Branch4 {
+    use std::arch::x86_64::*;
+    // SAFETY: AVX (the caller's contract).
+    unsafe {
+        let splat = _mm256_set1_pd;
+        let xi = rate::STATIC[2];
+        let dp = lanes!(cs, |c| c.dp_m);
+        let f_n = _mm256_mul_pd(splat(k.bond.kn_n_per_m), _mm256_sub_pd(_mm256_sub_pd(g.dist, lanes!(cs, |c| c.rest_m)), dp));
+        let ut_m = _mm256_add_pd(lanes!(cs, |c| c.ut_m), _mm256_mul_pd(g.vt, splat(dt_s)));
+        let f_t = _mm256_mul_pd(splat(k.bond.kt_n_per_m), ut_m);
+        let below_plateau = _mm256_cmp_pd::<_CMP_LE_OQ>(f_n, splat(k.strength.normal_force_n * xi));
+        let below_cap = _mm256_cmp_pd::<_CMP_LE_OQ>(_mm256_andnot_pd(splat(-0.0), f_t), splat(k.strength.shear_force_n * xi));
+        let holds = _mm256_cmp_pd::<_CMP_NGT_UQ>(dp, splat(k.strength.plastic_opening_at_break_m));
+        Branch4 { f_n, f_t, ut_m, elastic: _mm256_and_pd(_mm256_and_pd(below_plateau, below_cap), holds) }
+    }
+}
+
+/// Geometry and relative velocity of four contacts, lane l contact l: `geometry::four` and
 /// `forces::along`, operation for operation (the normal velocity is not formed: no part that
 /// reads it takes the lanes).
 #[cfg(target_arch = "x86_64")]

@@ -18,7 +18,6 @@ use rayon::prelude::*;
 
 use super::geometry::{self, Geometry, Separation, separation};
 use super::{bonds4, mixed4};
-
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 

@@ -19,7 +19,7 @@ use super::bonds4::{self, LANES};
 use super::contacts::{Bond, Contact, ContactForce};
 #[cfg(target_arch = "x86_64")]
 use super::geometry::Four;
-use super::law::{ContactClass, Dissipation, PartSet, rate};
+use super::law::{ContactClass, Dissipation, PartSet};
 
 /// True when the four contacts are of one class (the lanes share its constants).
 #[inline(always)]
@@ -28,7 +28,7 @@ pub fn one_class(cs: &[Contact; LANES]) -> bool {
     (cs[1].class == k0) & (cs[2].class == k0) & (cs[3].class == k0)
 }
 
-/// The four contacts `cs` ([`one_class`], class `k`) of geometry `geo` (`geometry::Block`) at
+/// The four contacts `cs` ([`one_class`], class `k`) of geometry `geo` (`geometry::four`) at
 /// half-step velocities `vel` over `dt_s`, with the parts `P` (no rate, compaction or damping part):
 /// their forces, with their history updated and the friction they dissipate added to `d`, if
 /// every intact bond among them stays elastic; else None, with nothing changed.
@@ -58,23 +58,13 @@ pub unsafe fn evaluate<P: PartSet>(
         let g = bonds4::kinematics(geo, vel, cs, k);
         let intact = _mm256_cmp_pd::<_CMP_EQ_OQ>(lanes!(cs, |c| (c.bond == Bond::Intact) as u8 as f64), splat(1.0));
         let (rest, ut0) = (lanes!(cs, |c| c.rest_m), lanes!(cs, |c| c.ut_m));
-        // `law::bonded`: slip = vt·Δt; `capped_spring`: ut_prev + slip. The frictional law
-        // forms the same increment.
-        let ut_trial = _mm256_add_pd(ut0, _mm256_mul_pd(g.vt, splat(dt_s)));
-        let opening = _mm256_sub_pd(g.dist, rest);
-
-        // Bonds: the elastic branch (as `bonds4::elastic`).
-        let xi = rate::STATIC[2];
-        let dp = lanes!(cs, |c| c.dp_m);
-        let fn_bond = _mm256_mul_pd(splat(k.bond.kn_n_per_m), _mm256_sub_pd(opening, dp));
-        let ft_bond = _mm256_mul_pd(splat(k.bond.kt_n_per_m), ut_trial);
-        let below_plateau = _mm256_cmp_pd::<_CMP_LE_OQ>(fn_bond, splat(k.strength.normal_force_n * xi));
-        let below_cap = _mm256_cmp_pd::<_CMP_LE_OQ>(_mm256_andnot_pd(sign, ft_bond), splat(k.strength.shear_force_n * xi));
-        let holds = _mm256_cmp_pd::<_CMP_NGT_UQ>(dp, splat(k.strength.plastic_opening_at_break_m));
-        let elastic = _mm256_and_pd(_mm256_and_pd(below_plateau, below_cap), holds);
-        if _mm256_movemask_pd(_mm256_andnot_pd(elastic, intact)) != 0 {
+        // Bonds: the elastic branch, as `bonds4::elastic` takes it. Its trial shear spring,
+        // ut_prev + vt·Δt, is the frictional law's too.
+        let bond = bonds4::elastic_branch(&g, cs, k, dt_s);
+        if _mm256_movemask_pd(_mm256_andnot_pd(bond.elastic, intact)) != 0 {
             return None;
         }
+        let (ut_trial, opening) = (bond.ut_m, _mm256_sub_pd(g.dist, rest));
 
         // Frictional pairs (`friction::touching`, `normal::frictional`, `capped_spring` with
         // kt_last = kt): touching is "not apart", apart is d² ≥ rest² (`forces::apart`).
@@ -105,8 +95,8 @@ pub unsafe fn evaluate<P: PartSet>(
 
         // Each lane keeps its own kind's outcome.
         let pushing = _mm256_or_pd(intact, touching);
-        let f_n = _mm256_blendv_pd(fn_fric, fn_bond, intact);
-        let f_t = _mm256_blendv_pd(ft_fric, ft_bond, intact);
+        let f_n = _mm256_blendv_pd(fn_fric, bond.f_n, intact);
+        let f_t = _mm256_blendv_pd(ft_fric, bond.f_t, intact);
         let force = bonds4::force(&g, f_n, f_t, pushing);
         let ut = bonds4::out(_mm256_blendv_pd(_mm256_blendv_pd(ut_apart, ut_touch, touching), ut_trial, intact));
         let rest = bonds4::out(_mm256_blendv_pd(rest_apart, rest, pushing));
