@@ -12,8 +12,8 @@
 //! stage is the scalar loop alone. A group with frictional pairs in it goes to
 //! [`super::mixed4`], which computes every kind in every lane: on the all-bonded groups this
 //! path, which computes only the bonds, is faster (1.06–1.20× over the peers' beam's first
-//! 1 000 steps), so the contact loop keeps both. The lanes' kinematics and force
-//! ([`kinematics`], [`force`]) serve both.
+//! 1 000 steps), so the contact loop keeps both. The lanes' kinematics, elastic branch and
+//! force (`kinematics`, `elastic_branch`, `force`, crate-private) serve both.
 
 use super::contacts::{Bond, Contact, ContactForce};
 #[cfg(target_arch = "x86_64")]
@@ -55,8 +55,7 @@ pub fn eligible(cs: &[Contact; LANES]) -> bool {
 
 /// The four bonds `cs` ([`eligible`], class `k`) of geometry `geo` (`geometry::four`) at
 /// half-step velocities `vel` over `dt_s`: their forces and new shear springs if all four stay
-/// elastic, else None.
-/// The contacts are not written (the caller stores `ut_m`).
+/// elastic, else None. The contacts are not written (the caller stores `ut_m`).
 ///
 /// # Safety
 /// The processor must have AVX ([`available`]); call it from a function compiled for AVX

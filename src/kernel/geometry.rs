@@ -54,7 +54,8 @@ pub fn of(s: Separation) -> Geometry {
     Geometry { d_m, nx: s.dx_m * inv, ny: s.dy_m * inv }
 }
 
-/// [`Geometry`] of four contacts, lane l contact l.
+/// [`Geometry`] of four contacts with their squared distance (a frictional pair's touching
+/// test), lane l contact l.
 #[cfg(target_arch = "x86_64")]
 #[derive(Clone, Copy)]
 pub struct Four {
