@@ -1,5 +1,6 @@
 //! The sweep engine from the command line, on a small fast scene (`tests/data/tiny_beam.toml`):
 //! the same tables for any thread count, after a kill -9 and a rerun, and from shards merged;
+//! a run two bisections ask for at once made once;
 //! a changed scene never mixed with old rows, and runs of another build made again, not read
 //! back; bad input refused with a clear message and no
 //! table written; the Parquet file the same table as the CSV.
@@ -78,6 +79,26 @@ fn the_tables_are_the_same_on_one_thread_and_on_two() {
     for d in [one, two] {
         std::fs::remove_dir_all(d).unwrap();
     }
+}
+
+/// The tiny beam's two thresholds lie in one grid interval (it perforates as soon as it scabs),
+/// so its two bisections ask for the same velocity at every step; on two threads each made it
+/// beside the other (17 runs made for the table's 12, every bisection run twice).
+#[test]
+fn two_bisections_asking_for_one_velocity_make_it_once() {
+    let two = tmp("shared-velocity");
+    let o = ballistic(&two, "2", &[]);
+    let stdout = String::from_utf8_lossy(&o.stdout);
+    let line = stdout.lines().find(|l| l.contains(" runs made, ")).expect("the sweep reports the runs it made");
+    let count = |word: &str| -> usize {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        let k = words.iter().position(|w| *w == word).expect(word);
+        words[k - 1].trim_end_matches(',').parse().expect("a count")
+    };
+    let rows = Table::read_csv(&two.join("runs.csv")).unwrap().rows.len();
+    assert_eq!(count("runs"), rows, "each run of the table made once: {line}");
+    assert!(count("found") > 0, "the bisections shared a velocity, as this scene makes them: {line}");
+    std::fs::remove_dir_all(two).unwrap();
 }
 
 #[test]

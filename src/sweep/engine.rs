@@ -5,6 +5,7 @@
 //! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
 //! others go on.
 
+use super::claims::Claims;
 use super::job::{Base, Job, run_job};
 use super::progress::Progress;
 use super::share::Cores;
@@ -20,6 +21,8 @@ pub struct Engine<'a> {
     /// Its threads (resolved once, see [`Engine::new`]) and what they are doing (runs borrow
     /// the idle ones).
     cores: Cores,
+    /// The runs `run_shared` is making now (one maker per run).
+    claims: Claims,
 }
 
 /// What a call to [`Engine::run`] did.
@@ -37,7 +40,7 @@ impl<'a> Engine<'a> {
     /// An engine of `threads` threads (0: rayon's default, one per core unless
     /// RAYON_NUM_THREADS says otherwise) for `base`.
     pub fn new(base: &'a Base, threads: usize, quiet: bool) -> Engine<'a> {
-        Engine { base, quiet, cores: Cores::new(threads) }
+        Engine { base, quiet, cores: Cores::new(threads), claims: Claims::default() }
     }
 
     /// The threads it runs on: `threads`, or rayon's default for 0.
@@ -120,24 +123,25 @@ impl Engine<'_> {
 }
 
 impl Engine<'_> {
-    /// Run one job on the calling thread unless `store` holds it, then add it to `store` and
-    /// rewrite the tables (the store shared by concurrent callers, e.g. two bisections). Returns
-    /// whether it ran.
+    /// Run one job on the calling thread unless `store` holds it or another caller is making it
+    /// (then wait for that run: [`Claims`]), then add it to `store` and rewrite the tables (the
+    /// store shared by concurrent callers, e.g. two bisections). Returns whether it ran.
     pub fn run_shared(&self, job: &Job, store: &std::sync::Mutex<&mut Store>) -> Result<bool> {
         job.check(self.base)?;
-        {
+        let mut written = Ok(());
+        let claim = self.claims.claim(&job.id(), || {
             let mut s = store.lock().expect("no run panics while holding the table");
-            if s.has(job) {
-                // Written at once: a bisection that finds every run it asks for done makes no
-                // insert that would write the table later, and its purpose would be lost on one
-                // thread while two threads, interleaving inserts, kept it (regression test
-                // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
-                if s.add_purpose(job) {
-                    s.write()?;
-                }
-                return Ok(false);
+            // Written at once: a bisection that finds every run it asks for done makes no
+            // insert that would write the table later, and its purpose would be lost on one
+            // thread while two threads, interleaving inserts, kept it (regression test
+            // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
+            if s.has(job) && s.add_purpose(job) {
+                written = s.write();
             }
-        }
+            s.has(job)
+        });
+        // Held until the row is in the store (dropped after `s` below).
+        let Some(_claim) = claim else { return written.map(|()| false) };
         let t0 = std::time::Instant::now();
         self.cores.prepare()?;
         let row = {
