@@ -6,8 +6,10 @@
 #   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
 #      one thread): steps, Δt, wall, element-steps per second, peak RSS; each run followed by two
 #      at once (one per core), whose slowdown bounds any two-thread sweep's efficiency;
-#   3. with FULL=1: the default ballistic sweep on 1 and on 2 threads and the parallel efficiency
-#      (about 40 minutes on this machine);
+#   3. the parallel efficiency of a ballistic sweep from 1 to 2 threads and its parts (the
+#      machine's, the scheduler's; scripts/sweep_efficiency.sh): the CI scene's sweep, REPEATS
+#      pairs (about 2 minutes each); with FULL=1 also the default sweep, one pair (about 22
+#      minutes on this machine);
 #   4. with FULL=1: `converge --mesh 3 --case penetration` cost per level and the exponent of
 #      cost against element count.
 # Timings on this machine vary by ±20 % from minute to minute: compare ratios from one run.
@@ -48,17 +50,14 @@ print(f"alone: median {a:.2f} s of {len(alone)}; two at once: median {p:.2f} s o
 print(f"=> ceiling the machine puts on the parallel efficiency of a two-thread sweep of such runs: {min(100.0, 100 * a / p):.0f} %")
 PY
 
+echo
+echo "== 3. parallel efficiency of a ballistic sweep, 1 -> 2 threads, taken apart (scripts/sweep_efficiency.sh):"
+echo "      the CI scene's sweep, $repeats pairs"
+DEMSWEEP_BIN="$bin" PAIRS="$repeats" bash scripts/sweep_efficiency.sh
 if [ "${FULL:-0}" = 1 ]; then
     echo
-    echo "== 3. the default ballistic sweep (500..1500 by 50, both bisections to 5 ft/s)"
-    for t in 1 2; do
-        start=$(date +%s.%N)
-        "$bin" ballistic --threads "$t" --quiet --out "$work/ballistic-$t" > /dev/null
-        end=$(date +%s.%N)
-        echo "$t $(echo "$end - $start" | bc -l)" >> "$work/sweeps"
-        printf 'threads %s: %.1f s\n' "$t" "$(echo "$end - $start" | bc -l)"
-    done
-    awk 'NR==1 {t1=$2} NR==2 {t2=$2} END {printf "parallel efficiency 1 -> 2 threads: %.1f %% (speed-up %.3f)\n", 100 * t1 / (2 * t2), t1 / t2}' "$work/sweeps"
+    echo "== 3b. the default ballistic sweep (500..1500 by 50, both bisections to 5 ft/s), one pair"
+    DEMSWEEP_BIN="$bin" PAIRS=1 bash scripts/sweep_efficiency.sh --scene sweeps/penetration.toml
     echo
     echo "== 4. converge --mesh 3 --case penetration (levels in parallel, one thread each)"
     "$bin" converge --mesh 3 --case penetration --quiet --out "$work/converge" > /dev/null
