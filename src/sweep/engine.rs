@@ -135,10 +135,11 @@ impl Engine<'_> {
             // insert that would write the table later, and its purpose would be lost on one
             // thread while two threads, interleaving inserts, kept it (regression test
             // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
-            if s.has(job) && s.add_purpose(job) {
+            let has = s.has(job);
+            if has && s.add_purpose(job) {
                 written = s.write();
             }
-            s.has(job)
+            has
         });
         // Held until the row is in the store (dropped after `s` below).
         let Some(_claim) = claim else { return written.map(|()| false) };
