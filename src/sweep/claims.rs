@@ -52,3 +52,39 @@ impl Drop for Claim<'_> {
         self.claims.released.notify_all();
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use std::sync::atomic::{AtomicBool, Ordering::SeqCst};
+    use std::time::Duration;
+
+    use super::Claims;
+
+    #[test]
+    fn a_second_claimant_waits_for_the_first_and_then_finds_the_run_made() {
+        let claims = Claims::default();
+        let made = AtomicBool::new(false);
+        let first = claims.claim("v=575", || made.load(SeqCst)).expect("nobody holds it yet");
+        std::thread::scope(|s| {
+            let waiter = s.spawn(|| claims.claim("v=575", || made.load(SeqCst)).is_none());
+            std::thread::sleep(Duration::from_millis(50));
+            assert!(!waiter.is_finished(), "the second claimant waits while the first holds the run");
+            assert!(claims.claim("v=600", || false).is_some(), "another run is not held up");
+            made.store(true, SeqCst);
+            drop(first);
+            assert!(waiter.join().unwrap(), "the second claimant found the run made instead of making it again");
+        });
+    }
+
+    #[test]
+    fn a_claim_released_without_its_run_passes_the_run_to_the_waiter() {
+        let claims = Claims::default();
+        let first = claims.claim("v=575", || false).expect("nobody holds it yet");
+        std::thread::scope(|s| {
+            let waiter = s.spawn(|| claims.claim("v=575", || false).is_some());
+            std::thread::sleep(Duration::from_millis(50));
+            drop(first);
+            assert!(waiter.join().unwrap(), "the run failed: the waiter makes it itself");
+        });
+    }
+}
