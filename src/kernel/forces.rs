@@ -46,7 +46,8 @@ pub struct Stage<'a> {
     pub sums: Option<&'a mut [[f64; 3]]>,
     /// Store each contact's force in `force` (always done without `sums`).
     pub record: bool,
-    /// Take four bonds at a time where the parts and the processor allow ([`bonds4`]).
+    /// Take the contacts four at a time where the parts and the processor allow ([`bonds4`],
+    /// [`mixed4`]).
     pub four_lanes: bool,
 }
 
@@ -56,16 +57,16 @@ impl law::PartsVisitor for Stage<'_> {
     fn visit<P: PartSet>(self) {
         let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums, record, four_lanes } = self;
         let at = &StepInput { pos, vel, dt_s, classes };
-        let four = four_lanes && bonds4_apply::<P>();
+        let four = four_lanes && lanes_apply::<P>();
         match sums {
-            // `four` only where `bonds4_apply` found AVX.
+            // `four` only where `lanes_apply` found AVX.
             None if four => parallel::<P, true>(at, list, extra, force, partial),
             None => parallel::<P, false>(at, list, extra, force, partial),
             // The serial loop compiled with and without the per-contact store: no branch per
             // contact on an observable the run does not ask for.
             Some(sums) => match (record, four) {
                 #[cfg(target_arch = "x86_64")]
-                // SAFETY: `bonds4_apply` checked that the processor has AVX.
+                // SAFETY: `lanes_apply` checked that the processor has AVX.
                 (true, true) => unsafe { scatter_avx::<P, true>(at, list, extra, force, partial, sums) },
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: as above.
@@ -77,10 +78,11 @@ impl law::PartsVisitor for Stage<'_> {
     }
 }
 
-/// True when the part set's bond law can take four elastic bonds at once (no part that reads
-/// the normal velocity or keeps an extra slot) and the processor can.
+/// True when the part set's laws can take four contacts at once — no part that reads the normal
+/// velocity or keeps an extra slot (friction may be on: [`mixed4`] carries it) — and the
+/// processor can.
 #[inline(always)]
-fn bonds4_apply<P: PartSet>() -> bool {
+fn lanes_apply<P: PartSet>() -> bool {
     !P::RATE && !P::COMPACTION && !P::DAMPING && bonds4::available()
 }
 
@@ -116,7 +118,7 @@ fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contac
     }
 }
 
-/// One chunk of [`parallel`] compiled for AVX, with the four-bond groups. (A function of its
+/// One chunk of [`parallel`] compiled for AVX, with the groups of four. (A function of its
 /// own: the closures of `parallel` are compiled without AVX, in which the lanes' intrinsics
 /// would be calls — 0.27× the one-thread speed on two threads, as first built.)
 ///
@@ -155,7 +157,7 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     out.finish();
 }
 
-/// [`scatter`] compiled for AVX, with the four-bond groups.
+/// [`scatter`] compiled for AVX, with the groups of four.
 ///
 /// # Safety
 /// The processor must have AVX.
