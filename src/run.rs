@@ -271,17 +271,32 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
     let own = opts.threading;
     // The lender's pool while a core is spare (looked at every LEND_POLL_STEPS steps).
     let mut borrowed: Option<&rayon::ThreadPool> = None;
-    for s in m.steps() + 1..=cap {
+    let mut s = m.steps();
+    while s < cap {
         if let Some(l) = opts.lend
-            && (s - 1).is_multiple_of(LEND_POLL_STEPS)
+            && s.is_multiple_of(LEND_POLL_STEPS)
         {
             borrowed = l.spare().then(|| l.pool());
             m.threading = if borrowed.is_some() { Threading::Pool } else { own };
         }
+        // The steps up to the next one after which something is looked at, in one go: on the
+        // pool, one entry into it for all of them (`Model::run_steps`).
+        let next = [
+            Some(cap),
+            Some(built.every_steps),
+            opts.stop.as_deref().map(|r| r.every_steps().max(1)),
+            opts.checkpointing.as_ref().map(|c| c.every_steps).filter(|&e| e > 0),
+            opts.lend.map(|_| LEND_POLL_STEPS),
+        ]
+        .into_iter()
+        .flatten()
+        .map(|every| (s / every + 1) * every)
+        .fold(cap, u64::min);
         match borrowed {
-            Some(pool) => pool.install(|| m.step())?,
-            None => m.step()?,
+            Some(pool) => pool.install(|| m.run_steps(next - s))?,
+            None => m.run_steps(next - s)?,
         }
+        s = next;
         let settled = match opts.stop.as_deref_mut() {
             Some(stop) if s % stop.every_steps().max(1) == 0 => stop.check(m),
             _ => None,

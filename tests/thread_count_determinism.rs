@@ -82,28 +82,68 @@ fn a_run_that_borrows_idle_cores_now_and_then_gives_the_bits_of_a_serial_run() {
 }
 
 #[test]
-fn recording_contact_forces_on_one_thread_changes_no_bit_and_gives_the_forces_the_parallel_stages_gather() {
-    // On one thread the contact stage sums the forces into the elements and keeps no
-    // per-contact copy unless asked: asking must change nothing else, and the copy must be
-    // what the parallel stages write (and gather from).
+fn recording_contact_forces_changes_no_bit_and_gives_forces_whose_gather_is_the_scattered_sum() {
+    // The contact stage adds each force to its two elements as it goes and keeps no
+    // per-contact copy unless asked: asking must change nothing else, the copy must be the
+    // same on any thread count, and summing it per element over the adjacency (a gather, in
+    // the adjacency's fixed order) must give, bit for bit, the element forces the scatter made.
     let run = |threads: usize, record: bool| {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         pool.install(|| {
             let mut m = common::impact::model();
             m.record_contact_forces = record;
-            m.parallel_min_contacts = 0;
             m.run_steps(400).unwrap();
             let forces: Vec<u64> = m.state.contacts.force.iter().flat_map(|f| [f.fx, f.fy, f.ti, f.tj]).map(f64::to_bits).collect();
-            (common::impact::state_bits(&m), forces)
+            (common::impact::state_bits(&m), forces, m)
         })
     };
-    let (plain, _) = run(1, false);
-    let (recorded, forces_serial) = run(1, true);
-    let (parallel, forces_parallel) = run(2, false);
+    let (plain, _, _) = run(1, false);
+    let (recorded, forces_serial, m) = run(1, true);
+    let (parallel, forces_parallel, _) = run(2, true);
     assert!(plain == recorded, "recording the contact forces changed the state");
     assert!(plain == parallel, "two threads differ from one");
     assert!(forces_serial.iter().any(|&b| b != 0), "no contact carried a force");
-    assert!(forces_serial == forces_parallel, "the recorded forces differ from the parallel stages'");
+    assert!(forces_serial == forces_parallel, "the recorded forces differ between one and two threads");
+    // The impact has no gravity, load or damping: an element's force is its contacts' sum.
+    let c = &m.state.contacts;
+    let mut gathered = 0;
+    for e in 0..m.el.len() {
+        let mut g = [0.0f64; 3];
+        for &a in &c.adj[c.start[e] as usize..c.start[e + 1] as usize] {
+            let f = &c.force[(a >> 1) as usize];
+            if a & 1 == 0 {
+                g = [g[0] + f.fx, g[1] + f.fy, g[2] + f.ti];
+            } else {
+                g = [g[0] - f.fx, g[1] - f.fy, g[2] + f.tj];
+            }
+        }
+        assert!(g.map(f64::to_bits) == m.state.force[e].map(f64::to_bits), "element {e}: gathered {g:?}, scattered {:?}", m.state.force[e]);
+        gathered += (c.start[e + 1] > c.start[e]) as usize;
+    }
+    assert!(gathered > m.el.len() / 2, "only {gathered} elements have contacts");
+}
+
+#[test]
+fn pieces_of_one_chunk_give_the_one_thread_bits_on_2_and_8_threads() {
+    // The scatter on the pool cuts the contact list into pieces (`kernel::pieces`): with the
+    // smallest pieces, the most contributions go through the records and the fix-up, and the
+    // pool may run the pieces in any order; the sums must still be the one-thread sums.
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        pool.install(|| {
+            let mut m = common::impact::fine();
+            m.scatter_piece_contacts = demsweep::kernel::forces::CHUNK;
+            let pieces = m.state.contacts.len().div_ceil(demsweep::kernel::forces::CHUNK);
+            m.run_steps(300).unwrap();
+            (common::impact::state_bits(&m), m.state.ledger.bonds_broken(), pieces)
+        })
+    };
+    let (one, broken, pieces) = run(1);
+    assert!(pieces >= 5, "{pieces} pieces");
+    assert!(broken > 0, "the scene must break bonds in 300 steps");
+    for threads in [2, 8] {
+        assert!(run(threads).0 == one, "{threads} threads with pieces of one chunk differ from one thread");
+    }
 }
 
 #[test]

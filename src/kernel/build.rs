@@ -351,6 +351,7 @@ impl ModelBuilder {
             threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
             record_contact_forces: false,
+            scatter_piece_contacts: super::pieces::PIECE,
             four_lanes: true,
             state,
             scratch: Default::default(),

@@ -1,7 +1,8 @@
 //! Contact arrays: one entry per pair that is bonded or may touch before the next neighbour
 //! rebuild, sorted by (i, j); the optional parts' state beside it; the per-contact force
-//! output; and the fixed per-element adjacency through which forces are gathered in a fixed
-//! order (bitwise determinism for any thread count).
+//! output; the fixed per-element adjacency through which stored forces are gathered in a fixed
+//! order; and the plan by which the contact stage on the pool scatters them in that order
+//! (`pieces`).
 
 use serde::{Deserialize, Serialize};
 
@@ -75,8 +76,8 @@ pub struct Contacts {
     pub list: Vec<Contact>,
     /// The optional parts' state, parallel to `list` (empty when no part needs it).
     pub extra: Vec<Extra>,
-    /// Forces of the last step, parallel to `list`: written by the parallel stages always, on
-    /// one thread only with `Model::record_contact_forces` (else they are stale).
+    /// Forces of the last step, parallel to `list`: written only with
+    /// `Model::record_contact_forces` (else they are stale).
     pub force: Vec<ContactForce>,
     /// CSR row starts: element e's entries are `adj[start[e]..start[e+1]]` (derived from `list`).
     #[serde(skip)]
@@ -85,6 +86,16 @@ pub struct Contacts {
     /// element's entries are in increasing contact order (derived from `list`).
     #[serde(skip)]
     pub adj: Vec<u32>,
+    /// Per piece of `piece_contacts` contacts, the elements it scatters into directly: the plan
+    /// of the contact stage's scatter on the pool (`pieces::plan`; derived from `list`, made by
+    /// [`Contacts::plan_pieces`] and kept up with the list from then on).
+    #[serde(skip)]
+    pub piece_ranges: Vec<std::ops::Range<u32>>,
+    #[serde(skip)]
+    first_piece: Vec<u32>,
+    /// Contacts per piece of `first_piece` (0: no plan).
+    #[serde(skip)]
+    pub piece_contacts: usize,
     #[serde(skip)]
     merged: Vec<Contact>,
     #[serde(skip)]
@@ -141,6 +152,16 @@ impl Contacts {
             self.adj[self.fill[c.j as usize] as usize] = (k << 1) | 1;
             self.fill[c.j as usize] += 1;
         }
+        if self.piece_contacts > 0 {
+            super::pieces::plan(&self.list, self.piece_contacts, n_elements, &mut self.first_piece, &mut self.piece_ranges);
+        }
+    }
+
+    /// Plan the scatter on the pool for pieces of `piece` contacts (kept up with the list from
+    /// now on, by every adjacency rebuild).
+    pub fn plan_pieces(&mut self, piece: usize, n_elements: usize) {
+        self.piece_contacts = piece;
+        super::pieces::plan(&self.list, piece, n_elements, &mut self.first_piece, &mut self.piece_ranges);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's

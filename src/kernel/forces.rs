@@ -3,10 +3,11 @@
 //! in parallel chunks with results independent of the thread count; dissipation is summed per
 //! fixed-size chunk and the chunk sums are added in chunk order (deterministic).
 //!
-//! On one thread the stage also adds each force to its two elements as it goes (a scatter),
-//! which spares the motion stage its gather. The scatter visits an element's contacts in
-//! increasing contact order, the same order as the gather's adjacency, from the same zero: the
-//! sums are bitwise the same either way.
+//! In a step the stage also adds each force to its two elements as it goes (a scatter), which
+//! spares the motion stage a gather. On one thread the scatter visits an element's contacts in
+//! increasing contact order from zero; on the pool the list is cut into pieces that keep that
+//! order (`pieces`): the sums are bitwise the same for any thread count, and the same as a
+//! gather over the adjacency (which `integrate::forces_now` does with stored forces).
 //!
 //! The loop is compiled once per set of optional law parts (`law::PartSet`). Where the part
 //! set allows it and the processor has AVX, the contacts go four at a time, with the same bits:
@@ -14,10 +15,12 @@
 //! of one class through every kind's law at once ([`mixed4`]); what neither takes (a bond
 //! leaving the elastic branch, classes mixed) one at a time.
 
+use std::ops::Range;
+
 use rayon::prelude::*;
 
 use super::geometry::{self, Geometry, Separation, separation};
-use super::{bonds4, mixed4};
+use super::{bonds4, mixed4, pieces};
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
@@ -42,37 +45,57 @@ pub struct Stage<'a> {
     pub dt_s: f64,
     /// One entry per chunk (output).
     pub partial: &'a mut [Dissipation],
-    /// With one thread: per-element force sums [Fx N, Fy N, T N·m], zero on entry.
-    pub sums: Option<&'a mut [[f64; 3]]>,
-    /// Store each contact's force in `force` (always done without `sums`).
+    /// Where each force goes besides `force`.
+    pub out: Out<'a>,
+    /// Store each contact's force in `force` (always done with [`Out::Stored`]).
     pub record: bool,
     /// Take the contacts four at a time where the parts and the processor allow ([`bonds4`],
     /// [`mixed4`]).
     pub four_lanes: bool,
 }
 
+/// Where stage 1 puts the forces.
+pub enum Out<'a> {
+    /// In `force` only, chunks on the pool (a gather sums them).
+    Stored,
+    /// Also added to their elements' sums [Fx N, Fy N, T N·m] (zero on entry), on this thread.
+    Serial(&'a mut [[f64; 3]]),
+    /// The same sums, made by pieces of `piece` contacts on the pool (`pieces`): `ranges` is
+    /// each piece's range of elements (`pieces::plan`), `records` scratch space.
+    Pieces { sums: &'a mut [[f64; 3]], ranges: &'a [Range<u32>], piece: usize, records: &'a mut Vec<Vec<pieces::Record>> },
+}
+
 impl law::PartsVisitor for Stage<'_> {
     type Output = ();
     #[inline(never)]
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, sums, record, four_lanes } = self;
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes } = self;
         let at = &StepInput { pos, vel, dt_s, classes };
         let four = four_lanes && lanes_apply::<P>();
-        match sums {
+        match out {
             // `four` only where `lanes_apply` found AVX.
-            None if four => parallel::<P, true>(at, list, extra, force, partial),
-            None => parallel::<P, false>(at, list, extra, force, partial),
-            // The serial loop compiled with and without the per-contact store: no branch per
-            // contact on an observable the run does not ask for.
-            Some(sums) => match (record, four) {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: `lanes_apply` checked that the processor has AVX.
-                (true, true) => unsafe { scatter_avx::<P, true>(at, list, extra, force, partial, sums) },
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as above.
-                (false, true) => unsafe { scatter_avx::<P, false>(at, list, extra, force, partial, sums) },
-                (true, _) => scatter::<P, true, false>(at, list, extra, force, partial, sums),
-                (false, _) => scatter::<P, false, false>(at, list, extra, force, partial, sums),
+            Out::Stored if four => parallel::<P, true>(at, list, extra, force, partial),
+            Out::Stored => parallel::<P, false>(at, list, extra, force, partial),
+            // The loops compiled with and without the per-contact store: no branch per contact
+            // on an observable the run does not ask for.
+            Out::Serial(sums) => {
+                let sums = Serial::new(sums);
+                match (record, four) {
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: `lanes_apply` checked that the processor has AVX.
+                    (true, true) => unsafe { scatter_avx::<P, true, _>(at, list, extra, force, partial, sums) },
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: as above.
+                    (false, true) => unsafe { scatter_avx::<P, false, _>(at, list, extra, force, partial, sums) },
+                    (true, _) => scatter::<P, true, false, _>(at, list, extra, force, partial, sums),
+                    (false, _) => scatter::<P, false, false, _>(at, list, extra, force, partial, sums),
+                }
+            }
+            Out::Pieces { sums, ranges, piece, records } => match (record, four) {
+                (true, true) => parallel_scatter::<P, true, true>(at, list, extra, force, partial, sums, ranges, piece, records),
+                (false, true) => parallel_scatter::<P, false, true>(at, list, extra, force, partial, sums, ranges, piece, records),
+                (true, false) => parallel_scatter::<P, true, false>(at, list, extra, force, partial, sums, ranges, piece, records),
+                (false, false) => parallel_scatter::<P, false, false>(at, list, extra, force, partial, sums, ranges, piece, records),
             },
         }
     }
@@ -130,18 +153,55 @@ unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut
     each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
 }
 
-/// One thread: each contact's force added to its two elements as it goes (and stored in
-/// `force` when `RECORD`).
-#[inline(always)]
-fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
+/// Several threads: pieces of `piece` contacts (whole chunks) scatter their forces (`pieces`),
+/// then the records are added in order.
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
     list: &mut [Contact],
     extra: &mut [Extra],
     force: &mut [ContactForce],
     partial: &mut [Dissipation],
     sums: &mut [[f64; 3]],
+    ranges: &[Range<u32>],
+    piece: usize,
+    records: &mut Vec<Vec<pieces::Record>>,
 ) {
-    let mut out = Scatter { sums, run_i: u32::MAX, acc: [0.0; 3] };
+    assert!(piece > 0 && piece.is_multiple_of(CHUNK), "pieces of whole chunks: the dissipation is summed per chunk");
+    assert_eq!(ranges.len(), list.len().div_ceil(piece), "a plan for another list");
+    records.resize_with(ranges.len(), Vec::new);
+    let mine = pieces::split(sums, ranges);
+    let run = |((cs, fs), ds): ((&mut [Contact], &mut [ContactForce]), &mut [Dissipation]), xs: &mut [Extra], (rs, (s, r)): (&mut Vec<pieces::Record>, (&mut [[f64; 3]], &Range<u32>))| {
+        let out = pieces::PieceSums::new(s, r.start, rs);
+        #[cfg(target_arch = "x86_64")]
+        if FOUR {
+            // SAFETY: FOUR is set only when the processor has AVX.
+            return unsafe { scatter_avx::<P, RECORD, _>(at, cs, xs, fs, ds, out) };
+        }
+        scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
+    };
+    let each = list.par_chunks_mut(piece).zip(force.par_chunks_mut(piece)).zip(partial.par_chunks_mut(piece / CHUNK));
+    let out = records.par_iter_mut().zip(mine.into_par_iter().zip(ranges.par_iter()));
+    if P::EXTRA {
+        each.zip(extra.par_chunks_mut(piece)).zip(out).for_each(|((a, xs), o)| run(a, xs, o));
+    } else {
+        each.zip(out).for_each(|(a, o)| run(a, &mut [], o));
+    }
+    pieces::fix_up(sums, records);
+}
+
+/// Each contact's force added to its two elements by `out` as it goes (and stored in `force`
+/// when `RECORD`), chunk by chunk.
+#[inline(always)]
+fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
+    at: &StepInput<'_>,
+    list: &mut [Contact],
+    extra: &mut [Extra],
+    force: &mut [ContactForce],
+    partial: &mut [Dissipation],
+    mut out: S,
+) {
     let n = list.len();
     for (c, d) in partial.iter_mut().enumerate() {
         let (from, to) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
@@ -157,32 +217,62 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     out.finish();
 }
 
+/// [`scatter`] one at a time, as a function of its own: inlined into the pool's closure, where
+/// the compiler knows less of what aliases what, the same loop ran 1.15× slower.
+#[inline(never)]
+fn scatter_alone<P: PartSet, const RECORD: bool, S: Sums>(
+    at: &StepInput<'_>,
+    list: &mut [Contact],
+    extra: &mut [Extra],
+    force: &mut [ContactForce],
+    partial: &mut [Dissipation],
+    out: S,
+) {
+    scatter::<P, RECORD, false, S>(at, list, extra, force, partial, out)
+}
+
 /// [`scatter`] compiled for AVX, with the groups of four.
 ///
 /// # Safety
 /// The processor must have AVX.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx")]
-unsafe fn scatter_avx<P: PartSet, const RECORD: bool>(
+unsafe fn scatter_avx<P: PartSet, const RECORD: bool, S: Sums>(
     at: &StepInput<'_>,
     list: &mut [Contact],
     extra: &mut [Extra],
     force: &mut [ContactForce],
     partial: &mut [Dissipation],
-    sums: &mut [[f64; 3]],
+    out: S,
 ) {
-    scatter::<P, RECORD, true>(at, list, extra, force, partial, sums)
+    scatter::<P, RECORD, true, S>(at, list, extra, force, partial, out)
 }
 
-/// Per-element force sums as the contacts are visited in order: contacts are sorted by i, so
-/// i's running sum stays in registers while i repeats.
-struct Scatter<'a> {
+/// Where a scatter adds each contact's force: (fx, fy, ti) to element i, (−fx, −fy, tj) to j,
+/// visited in contact order.
+pub trait Sums {
+    /// Add contact `c`'s force `f`.
+    fn add(&mut self, c: &Contact, f: &ContactForce);
+    /// Write out what is still held.
+    fn finish(&mut self);
+}
+
+/// The one-thread scatter: contacts are sorted by i, so i's running sum stays in registers
+/// while i repeats.
+pub struct Serial<'a> {
     sums: &'a mut [[f64; 3]],
     run_i: u32,
     acc: [f64; 3],
 }
 
-impl Scatter<'_> {
+impl<'a> Serial<'a> {
+    /// Adding into `sums` (zero where nothing was added yet).
+    pub fn new(sums: &'a mut [[f64; 3]]) -> Self {
+        Serial { sums, run_i: u32::MAX, acc: [0.0; 3] }
+    }
+}
+
+impl Sums for Serial<'_> {
     #[inline(always)]
     fn add(&mut self, c: &Contact, f: &ContactForce) {
         if c.i != self.run_i {
@@ -202,7 +292,7 @@ impl Scatter<'_> {
     }
 
     #[inline(always)]
-    fn finish(self) {
+    fn finish(&mut self) {
         if self.run_i != u32::MAX {
             self.sums[self.run_i as usize] = self.acc;
         }

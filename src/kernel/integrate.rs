@@ -1,6 +1,6 @@
-//! Stage 2 of a step, element motion: gather each element's contact forces over its fixed
-//! adjacency (a fixed summation order: bitwise the same for any thread count), add loads and
-//! gravity, and advance by central differences with the mass-proportional half of Rayleigh
+//! Stage 2 of a step, element motion: take each element's contact forces as stage 1 summed
+//! them (in a fixed order: bitwise the same for any thread count), add loads and gravity, and
+//! advance by central differences with the mass-proportional half of Rayleigh
 //! damping, C = αM:
 //!
 //!   v(n+½) = [(1 − αΔt/2) v(n−½) + Δt F(n)/m] / (1 + αΔt/2),   x(n+1) = x(n) + Δt v(n+½).
@@ -113,12 +113,11 @@ pub fn rigid_frames(el: &Elements, pos: &[[f64; 3]], vel: &[[f64; 3]], bodies: u
     }
 }
 
-/// Generalised force on element `e` from its contacts, its load group and gravity, and the
-/// external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]). The contacts' sum is
-/// `summed` when stage 1 made it, else gathered here in the adjacency's fixed order.
+/// Generalised force on an element from its contacts' sum `summed`, its load group and
+/// gravity, and the external part of it alone: ([Fx N, Fy N, T N·m], [Fx N, Fy N]).
 #[inline(always)]
-fn total_force<const EXTERNAL: bool>(e: usize, contacts: &Contacts, summed: Option<[f64; 3]>, mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
-    let [fx, fy, tz] = summed.unwrap_or_else(|| gather(e, contacts));
+fn total_force<const EXTERNAL: bool>(summed: [f64; 3], mass_kg: f64, load: u16, drive: Drive<'_>, gravity: [f64; 2]) -> ([f64; 3], [f64; 2]) {
+    let [fx, fy, tz] = summed;
     if !EXTERNAL {
         return ([fx, fy, tz], [0.0, 0.0]);
     }
@@ -154,7 +153,7 @@ fn gather(e: usize, contacts: &Contacts) -> [f64; 3] {
 
 /// Forces of every element for the current contact forces (no motion), as `advance` would see them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    (0..el.len()).map(|e| total_force::<true>(e, contacts, None, el.mass[e], el.load[e], drive, gravity).0).collect()
+    (0..el.len()).map(|e| total_force::<true>(gather(e, contacts), el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
 /// What the motion stage of a model has to do, resolved once per step from its parameters
@@ -181,10 +180,8 @@ pub struct Motion<'a> {
     pub vel: &'a mut [[f64; 3]],
     /// Total force per element [Fx N, Fy N, T N·m] (output).
     pub force: &'a mut [[f64; 3]],
-    /// Contacts, with their forces and adjacency for the gather.
-    pub contacts: &'a Contacts,
-    /// The contact forces already summed per element by stage 1 (one thread; zeroed here as
-    /// they are read, ready for the next step), or empty to gather them over the adjacency.
+    /// The contact forces summed per element by stage 1 (zeroed here as they are read, ready
+    /// for the next step).
     pub sums: &'a mut [[f64; 3]],
     /// Positions at the last neighbour update, m.
     pub rebuild_pos: &'a [[f64; 2]],
@@ -245,7 +242,7 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, contacts, sums, rebuild_pos, margin_m, drive, p, partial, parallel } = m;
+    let Motion { el, pos, vel, force, sums, rebuild_pos, margin_m, drive, p, partial, parallel } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
@@ -268,19 +265,8 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         let (mut bad, mut drifted) = (false, false);
         // Free elements with no damping or external force: runs of them take the update of the
         // general loop below component by component over flat arrays (it vectorises), then its
-        // checks. It reads the contact sums: stage 1 made them on one thread; on the pool they
-        // are gathered here first, the same sums as `total_force` gathers.
-        let mut gathered: [[f64; 3]; CHUNK];
-        let ss = if !DAMPED && !EXTERNAL && ss.is_empty() {
-            gathered = [[0.0; 3]; CHUNK];
-            for (o, g) in gathered[..n].iter_mut().enumerate() {
-                *g = gather(base + o, contacts);
-            }
-            &mut gathered[..n]
-        } else {
-            ss
-        };
-        let flat = !DAMPED && !EXTERNAL && ss.len() == n;
+        // checks.
+        let flat = !DAMPED && !EXTERNAL;
         let mut o = 0;
         while o < n {
             let run = if flat { motion[o..].iter().position(|&g| g != 0).unwrap_or(n - o) } else { 0 };
@@ -302,9 +288,8 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
                 o = b;
                 continue;
             }
-            let (e, x) = (base + o, &mut ps[o]);
-            let summed = ss.get_mut(o).map(std::mem::take);
-            let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(e, contacts, summed, mass[o], load[o], drive, p.gravity_mps2);
+            let x = &mut ps[o];
+            let ([fx, fy, tz], [ex, ey]) = total_force::<EXTERNAL>(std::mem::take(&mut ss[o]), mass[o], load[o], drive, p.gravity_mps2);
             fs[o] = [fx, fy, tz];
             let v0 = vs[o];
             let v1 = if motion[o] != 0 {
@@ -368,23 +353,19 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         }
         r
     };
+    assert_eq!(sums.len(), pos.len(), "the motion stage reads the contact sums stage 1 made");
     if parallel {
-        debug_assert!(sums.is_empty(), "the parallel stages gather");
         pos.par_chunks_mut(CHUNK)
             .zip(vel.par_chunks_mut(CHUNK))
             .zip(force.par_chunks_mut(CHUNK))
             .zip(partial.par_iter_mut())
+            .zip(sums.par_chunks_mut(CHUNK))
             .enumerate()
-            .for_each(|(k, (((ps, vs), fs), out))| *out = run(k, ps, vs, fs, &mut []));
+            .for_each(|(k, ((((ps, vs), fs), out), ss))| *out = run(k, ps, vs, fs, ss));
     } else {
-        let mut sums = sums;
-        for (k, (((ps, vs), fs), out)) in
-            pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).enumerate()
+        for (k, ((((ps, vs), fs), out), ss)) in
+            pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate()
         {
-            // This chunk's sums, or none (a gather) when stage 1 made none.
-            let take = if sums.is_empty() { 0 } else { ps.len() };
-            let (ss, rest) = std::mem::take(&mut sums).split_at_mut(take);
-            sums = rest;
             *out = run(k, ps, vs, fs, ss);
         }
     }

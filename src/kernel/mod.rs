@@ -1,7 +1,8 @@
 //! The DEM kernel. A step is the source's three stages (seed 000 §2):
 //!
-//! 1. **contact processing** (`forces`): every contact's force from the current positions;
-//! 2. **element motion** (`integrate`): gather forces, central-difference update, blow-up watch;
+//! 1. **contact processing** (`forces`): every contact's force from the current positions,
+//!    added to its two elements (`pieces` on the pool);
+//! 2. **element motion** (`integrate`): summed forces, central-difference update, blow-up watch;
 //! 3. **contact detection** (`detect`, `neighbours`): when an element has drifted further than
 //!    its neighbour margin since the last rebuild, rebuild the candidate pairs, keeping bonds
 //!    and frictional contacts with their history.
@@ -23,6 +24,7 @@ pub mod geometry;
 pub mod integrate;
 pub mod law;
 pub mod neighbours;
+pub mod pieces;
 pub mod stability;
 pub mod state;
 
@@ -95,9 +97,11 @@ struct Scratch {
     motion_now: Vec<[f64; 3]>,
     frame_now: Vec<[f64; 5]>,
     frame_scratch: Vec<[f64; 5]>,
-    /// Per-element contact force sums of stage 1 when it runs on one thread: zero between
-    /// steps (the motion stage zeroes each entry as it reads it, sparing a pass that clears them).
+    /// Per-element contact force sums of stage 1: zero between steps (the motion stage zeroes
+    /// each entry as it reads it, sparing a pass that clears them).
     contact_sums: Vec<[f64; 3]>,
+    /// The pieces' records of the scatter on the pool (`pieces`).
+    records: Vec<Vec<pieces::Record>>,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
 }
@@ -131,12 +135,15 @@ pub struct Model {
     pub threading: Threading,
     /// Contacts from which the stages run on rayon's pool (see [`PARALLEL_MIN_CONTACTS`]).
     pub parallel_min_contacts: usize,
-    /// Keep each contact's force of the last step in `state.contacts.force` on one thread too
-    /// (an observable: the virial stress, a single contact's law). The parallel stages always
-    /// write them, since their motion stage gathers from them; on one thread the contact stage
-    /// adds each force to its two elements as it goes and, without this, stores no copy (the
-    /// copy was 1.3 MB written per step on the peers' beam, about a tenth of its step).
+    /// Keep each contact's force of the last step in `state.contacts.force` (an observable: the
+    /// virial stress, a single contact's law). The contact stage adds each force to its two
+    /// elements as it goes and, without this, stores no copy (the copy was 1.3 MB written per
+    /// step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
+    /// Contacts per piece of the contact stage's scatter on the pool (`pieces`; a multiple of
+    /// `forces::CHUNK`). The bits do not depend on it; smaller pieces balance the threads better
+    /// and send more contributions through the serial fix-up.
+    pub scatter_piece_contacts: usize,
     /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
     /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
     pub four_lanes: bool,
@@ -178,8 +185,18 @@ impl Model {
         Ok(())
     }
 
-    /// Advance `n` steps.
+    /// Advance `n` steps. On the pool, from a thread outside it, the steps run on one of its
+    /// workers: one entry into the pool for all of them, not two per step, and the same worker
+    /// starts every parallel stage, so each stage's pieces tend to stay on the cores that had
+    /// them the step before.
     pub fn run_steps(&mut self, n: u64) -> Result<()> {
+        if n > 1 && self.parallel() && rayon::current_thread_index().is_none() {
+            return rayon::scope(|_| self.steps_here(n));
+        }
+        self.steps_here(n)
+    }
+
+    fn steps_here(&mut self, n: u64) -> Result<()> {
         for _ in 0..n {
             self.step()?;
         }
@@ -196,11 +213,22 @@ impl Model {
         let s = &mut self.scratch;
         let n_chunks = self.state.contacts.len().div_ceil(forces::CHUNK);
         s.diss_partial.resize(n_chunks, Dissipation::default());
-        if !parallel && s.contact_sums.len() != self.el.len() {
-            s.contact_sums = vec![[0.0; 3]; self.el.len()];
+        let n = self.el.len();
+        if s.contact_sums.len() != n {
+            s.contact_sums = vec![[0.0; 3]; n];
         }
         let st = &mut self.state;
-        let contacts::Contacts { list, extra, force, .. } = &mut st.contacts;
+        let piece = self.scatter_piece_contacts;
+        if parallel && st.contacts.piece_contacts != piece {
+            st.contacts.plan_pieces(piece, n);
+        }
+        let contacts::Contacts { list, extra, force, piece_ranges, .. } = &mut st.contacts;
+        let sums = &mut s.contact_sums[..];
+        let out = if parallel {
+            forces::Out::Pieces { sums, ranges: piece_ranges, piece, records: &mut s.records }
+        } else {
+            forces::Out::Serial(sums)
+        };
         let stage = forces::Stage {
             pos: &st.pos,
             vel: &st.vel,
@@ -210,8 +238,8 @@ impl Model {
             classes: &self.classes,
             dt_s: self.motion.dt_s,
             partial: &mut s.diss_partial,
-            sums: if parallel { None } else { Some(&mut s.contact_sums[..]) },
-            record: parallel || self.record_contact_forces,
+            out,
+            record: self.record_contact_forces,
             four_lanes: self.four_lanes,
         };
         self.parts.dispatch(stage);
@@ -235,8 +263,7 @@ impl Model {
             pos: &mut st.pos,
             vel: &mut st.vel,
             force: &mut st.force,
-            contacts: &st.contacts,
-            sums: if parallel { &mut [] } else { &mut s.contact_sums[..] },
+            sums: &mut s.contact_sums[..],
             rebuild_pos: &st.rebuild_pos,
             margin_m: &st.margin_m,
             drive,
@@ -338,7 +365,7 @@ impl Model {
             classes: &self.classes,
             dt_s: 0.0,
             partial: &mut partial,
-            sums: None,
+            out: forces::Out::Stored,
             record: true,
             four_lanes: self.four_lanes,
         };
