@@ -6,6 +6,8 @@
 #   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
 #      one thread): steps, Δt, wall, element-steps per second, peak RSS; each run followed by two
 #      at once (one per core), whose slowdown bounds any two-thread sweep's efficiency;
+#   2b. one large run (the level-2 event) on one thread and on two: speed-up per pair, the cores'
+#      busy share, the summaries bitwise the same (scripts/large_run.sh; about 40 s a pair);
 #   3. the parallel efficiency of a ballistic sweep from 1 to 2 threads and its parts (the
 #      machine's, the scheduler's; scripts/sweep_efficiency.sh): the CI scene's sweep, REPEATS
 #      pairs (about 2 minutes each); with FULL=1 also the default sweep, one pair (about 22
@@ -49,6 +51,10 @@ a, p = statistics.median(alone), statistics.median(pair)
 print(f"alone: median {a:.2f} s of {len(alone)}; two at once: median {p:.2f} s of {len(pair)}; slowdown {p / a:.3f}")
 print(f"=> ceiling the machine puts on the parallel efficiency of a two-thread sweep of such runs: {min(100.0, 100 * a / p):.0f} %")
 PY
+
+echo
+echo "== 2b. one large run (the level-2 event, 54 253 elements) on one thread and on two, $repeats pairs (scripts/large_run.sh)"
+DEMSWEEP_BIN="$bin" PAIRS="$repeats" bash scripts/large_run.sh
 
 echo
 echo "== 3. parallel efficiency of a ballistic sweep, 1 -> 2 threads, taken apart (scripts/sweep_efficiency.sh):"
