@@ -140,9 +140,10 @@ pub struct Model {
     /// elements as it goes and, without this, stores no copy (the copy was 1.3 MB written per
     /// step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
-    /// Contacts per piece of the contact stage's scatter on the pool (`pieces`; a multiple of
-    /// `forces::CHUNK`). The bits do not depend on it; smaller pieces balance the threads better
-    /// and send more contributions through the serial fix-up.
+    /// Contacts per piece of the contact stage's scatter on the pool at most (`pieces`; a
+    /// multiple of `forces::CHUNK`; fewer where the pool would get too few pieces, see
+    /// `pieces::piece_len`). The bits do not depend on it; smaller pieces balance the threads
+    /// better and send more contributions through the serial fix-up.
     pub scatter_piece_contacts: usize,
     /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
     /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
@@ -218,7 +219,7 @@ impl Model {
             s.contact_sums = vec![[0.0; 3]; n];
         }
         let st = &mut self.state;
-        let piece = self.scatter_piece_contacts;
+        let piece = pieces::piece_len(st.contacts.len(), rayon::current_num_threads(), self.scatter_piece_contacts);
         if parallel && st.contacts.piece_contacts != piece {
             st.contacts.plan_pieces(piece, n);
         }

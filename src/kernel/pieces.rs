@@ -19,8 +19,21 @@
 use super::contacts::{Contact, ContactForce};
 use super::forces::Sums;
 
-/// Contacts per piece by default: eight chunks (see `Model::scatter_piece_contacts`).
+/// Contacts per piece at most by default: eight chunks (see `Model::scatter_piece_contacts`).
 pub const PIECE: usize = 8 * super::forces::CHUNK;
+
+/// Pieces per thread aimed at: enough for the pool to even out pieces of unequal cost (the
+/// peers' beam, 39 726 contacts, in pieces of eight chunks made three pieces for two threads
+/// and ran 1.2× slower than the chunks of the gather before it).
+const PIECES_PER_THREAD: usize = 4;
+
+/// Contacts per piece for `contacts` contacts on `threads` threads, pieces of `most` contacts
+/// at most: whole chunks, at least one.
+pub fn piece_len(contacts: usize, threads: usize, most: usize) -> usize {
+    let chunk = super::forces::CHUNK;
+    let chunks = contacts / (PIECES_PER_THREAD * threads.max(1)) / chunk;
+    (chunks.max(1) * chunk).min(most.max(chunk))
+}
 
 /// One contribution to an element outside the piece's range, kept for [`fix_up`].
 #[derive(Debug, Clone, Copy)]
@@ -260,6 +273,18 @@ mod tests {
                 assert_eq!(kept, 0, "one piece owns every element it touches");
             }
         }
+    }
+
+    #[test]
+    fn pieces_are_whole_chunks_about_four_per_thread_and_never_above_the_cap() {
+        let chunk = crate::kernel::forces::CHUNK;
+        // The peers' beam on two threads: 39 726 contacts in pieces of two chunks (ten pieces).
+        assert_eq!(piece_len(39_726, 2, PIECE), 2 * chunk);
+        // The level-2 event: 166 243 contacts, capped at eight chunks.
+        assert_eq!(piece_len(166_243, 2, PIECE), PIECE);
+        // Small lists: one chunk; the cap below a chunk still gives a chunk.
+        assert_eq!(piece_len(3_000, 8, PIECE), chunk);
+        assert_eq!(piece_len(166_243, 2, 0), chunk);
     }
 
     #[test]
