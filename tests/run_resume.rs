@@ -149,3 +149,55 @@ fn a_stop_rule_ends_a_run_early_and_a_resumed_run_ends_the_same_way() {
     let full = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
     assert_eq!((full.summary.steps, full.summary.end_reason.as_str()), (cap, "duration"));
 }
+
+/// Never stops; notes the step of each look.
+struct Looks(Vec<u64>);
+
+impl run::StopRule for Looks {
+    fn every_steps(&self) -> u64 {
+        7
+    }
+    fn check(&mut self, m: &demsweep::kernel::Model) -> Option<String> {
+        self.0.push(m.steps());
+        None
+    }
+    fn save(&self) -> Vec<u8> {
+        Vec::new()
+    }
+    fn load(&mut self, _: &[u8]) -> demsweep::Result<()> {
+        Ok(())
+    }
+}
+
+#[test]
+fn a_run_stepping_in_batches_looks_records_and_checkpoints_at_the_steps_it_would_one_by_one() {
+    // run_with steps in batches up to the next step after which something is looked at; each
+    // look, record and checkpoint must still come after exactly its step.
+    let mut built = plate().build().unwrap();
+    let cap = 100;
+    built.every_steps = 5;
+    built.duration_s = (cap as f64 - 0.5) * built.model.dt_s();
+    let mut looks = Looks(Vec::new());
+    let (mut recorded, mut saved) = (Vec::new(), Vec::new());
+    let mut observe = |m: &demsweep::kernel::Model| {
+        recorded.push(m.steps());
+        Ok(())
+    };
+    let mut save = |c: &RunCheckpoint| {
+        saved.push(c.values.len());
+        Ok(())
+    };
+    let options = run::Options {
+        stop: Some(&mut looks),
+        observe: Some(&mut observe),
+        checkpointing: Some(Checkpointing { every_steps: 11, save: &mut save }),
+        ..Default::default()
+    };
+    let r = run::run_with(built, options).unwrap();
+    assert_eq!(r.summary.steps, cap);
+    assert_eq!(looks.0, (1..=cap / 7).map(|k| 7 * k).collect::<Vec<_>>());
+    assert_eq!(recorded, (1..=cap / 5).map(|k| 5 * k).collect::<Vec<_>>());
+    // A checkpoint at steps 11, 22, … 99 holds the records made so far (the initial one and one
+    // per 5 steps).
+    assert_eq!(saved, (1..=(cap - 1) / 11).map(|k| 1 + (11 * k / 5) as usize).collect::<Vec<_>>());
+}

@@ -8,9 +8,8 @@
 //! pieces far apart touch) is made by the fix-up alone, from zero, in the same order.
 //!
 //! The ranges are disjoint slices of the sums: no unsafe code, and the compiler knows the
-//! pieces' writes alias nothing else (the first version, a shared pointer checked against each
-//! element's first piece, made the contact stage 1.2× slower on one thread). A plan that did not
-//! fit the list would change bits (the thread-count tests would see it), never memory safety.
+//! pieces' writes alias nothing else. A plan that did not fit the list would change bits (the
+//! thread-count tests would see it), never memory safety.
 //!
 //! Why not a gather: summing each element's forces over its adjacency after the stage reads
 //! every force twice through a scattered index (2.4× the one-thread motion stage on the
