@@ -298,11 +298,11 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         }
         s = next;
         let settled = match opts.stop.as_deref_mut() {
-            Some(stop) if s % stop.every_steps().max(1) == 0 => stop.check(m),
+            Some(stop) if s.is_multiple_of(stop.every_steps().max(1)) => stop.check(m),
             _ => None,
         };
         let last = s == cap || settled.is_some();
-        if s % built.every_steps == 0 || last {
+        if s.is_multiple_of(built.every_steps) || last {
             record(m, &mut values);
             if let Some(t) = opts.tick.as_deref_mut() {
                 t(s as f64 / cap as f64);
@@ -315,7 +315,7 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
             end_reason = reason;
             break;
         }
-        if let Some(c) = opts.checkpointing.as_mut().filter(|c| c.every_steps > 0 && s % c.every_steps == 0 && s < cap) {
+        if let Some(c) = opts.checkpointing.as_mut().filter(|c| c.every_steps > 0 && s.is_multiple_of(c.every_steps) && s < cap) {
             let snapshot = RunCheckpoint {
                 model: m.checkpoint(),
                 values: values.clone(),

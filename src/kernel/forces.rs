@@ -153,6 +153,9 @@ unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut
     each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
 }
 
+/// What one piece writes besides its contacts: its records, its range's sums and that range.
+type PieceOut<'a> = (&'a mut Vec<pieces::Record>, (&'a mut [[f64; 3]], &'a Range<u32>));
+
 /// Several threads: pieces of `piece` contacts (whole chunks) scatter their forces (`pieces`),
 /// then the records are added in order.
 #[allow(clippy::too_many_arguments)]
@@ -172,7 +175,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     assert_eq!(ranges.len(), list.len().div_ceil(piece), "a plan for another list");
     records.resize_with(ranges.len(), Vec::new);
     let mine = pieces::split(sums, ranges);
-    let run = |((cs, fs), ds): ((&mut [Contact], &mut [ContactForce]), &mut [Dissipation]), xs: &mut [Extra], (rs, (s, r)): (&mut Vec<pieces::Record>, (&mut [[f64; 3]], &Range<u32>))| {
+    let run = |((cs, fs), ds): ((&mut [Contact], &mut [ContactForce]), &mut [Dissipation]), xs: &mut [Extra], (rs, (s, r)): PieceOut<'_>| {
         let out = pieces::PieceSums::new(s, r.start, rs);
         #[cfg(target_arch = "x86_64")]
         if FOUR {
