@@ -91,9 +91,10 @@ pub struct Contacts {
     /// [`Contacts::plan_pieces`] and kept up with the list from then on).
     #[serde(skip)]
     pub piece_ranges: Vec<std::ops::Range<u32>>,
+    /// Scratch of the plan: each element's first piece.
     #[serde(skip)]
     first_piece: Vec<u32>,
-    /// Contacts per piece of `first_piece` (0: no plan).
+    /// Contacts per piece of `piece_ranges` (0: no plan).
     #[serde(skip)]
     pub piece_contacts: usize,
     #[serde(skip)]

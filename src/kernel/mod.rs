@@ -219,16 +219,19 @@ impl Model {
             s.contact_sums = vec![[0.0; 3]; n];
         }
         let st = &mut self.state;
-        let piece = pieces::piece_len(st.contacts.len(), rayon::current_num_threads(), self.scatter_piece_contacts);
-        if parallel && st.contacts.piece_contacts != piece {
+        // On the pool: the pieces' length for this list and pool, the plan made again if it
+        // changed (one thread needs neither).
+        let piece = parallel.then(|| pieces::piece_len(st.contacts.len(), rayon::current_num_threads(), self.scatter_piece_contacts));
+        if let Some(piece) = piece
+            && st.contacts.piece_contacts != piece
+        {
             st.contacts.plan_pieces(piece, n);
         }
         let contacts::Contacts { list, extra, force, piece_ranges, .. } = &mut st.contacts;
         let sums = &mut s.contact_sums[..];
-        let out = if parallel {
-            forces::Out::Pieces { sums, ranges: piece_ranges, piece, records: &mut s.records }
-        } else {
-            forces::Out::Serial(sums)
+        let out = match piece {
+            Some(piece) => forces::Out::Pieces { sums, ranges: piece_ranges, piece, records: &mut s.records },
+            None => forces::Out::Serial(sums),
         };
         let stage = forces::Stage {
             pos: &st.pos,
