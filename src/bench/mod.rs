@@ -237,7 +237,7 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
 /// One row of the optional-law benchmark.
 #[derive(Debug, Clone)]
 pub struct LawFigures {
-    /// "none", "all", the parts on, "<parts>, one at a time" (`Model::four_lanes` off) or
+    /// "none", "all", the parts on, `"<parts>, one at a time"` (`Model::four_lanes` off) or
     /// "simple" (the simple kernel of [`simple`]).
     pub name: String,
     /// Contacts stepped.
@@ -249,7 +249,7 @@ pub struct LawFigures {
 }
 
 /// The block on one thread with each set of optional parts in `sets`, the first set again
-/// with its bonds one at a time (`Model::four_lanes` off, named "<set>, one at a time"), and the
+/// with its bonds one at a time (`Model::four_lanes` off, named `"<set>, one at a time"`), and the
 /// simple kernel, timed round-robin (each round times every variant once, so that the machine's
 /// drift is shared) for `repeats` rounds of `steps` steps.
 pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repeats: usize) -> Result<Vec<LawFigures>> {

@@ -12,7 +12,7 @@ use crate::sweep::{Engine, Store, Vary, from_table, grid};
 pub struct Args {
     /// Scene file (a kernel or a penetration scene).
     pub scene: PathBuf,
-    /// A varied field: FIELD=START..END[:STEP] (inclusive) or FIELD=V1,V2,…; repeatable (the
+    /// A varied field: `FIELD=START..END[:STEP]` (inclusive) or `FIELD=V1,V2,…`; repeatable (the
     /// grid is every combination, the last field fastest).
     #[arg(long, value_name = "FIELD=RANGE")]
     pub vary: Vec<String>,

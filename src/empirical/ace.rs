@@ -8,8 +8,8 @@
 //! Below those ranges Kennedy's quadratic branches apply, so h_s and h_p are
 //! [`super::kennedy`]'s relations on the ACE depth. SI: x/d = (3.5e-4/√fc)(M/d³)d^0.215 V^1.5 + 0.5.
 //! Since x/d ≥ 0.5 at any V, ACE predicts scabbing at any velocity for h/d < 2.69 and perforation
-//! for h/d < 1.42. Sources: SI form and h_p verbatim [THESIS]; h_s = DOE C.6-5; 282 = 4·222/π as in
-//! TM 5-855-1 [LEPP]. Confidence: High.
+//! for h/d < 1.42. Sources: SI form and h_p verbatim \[THESIS\]; h_s = DOE C.6-5; 282 = 4·222/π as in
+//! TM 5-855-1 \[LEPP\]. Confidence: High.
 
 use super::{Missile, Target};
 

@@ -7,7 +7,7 @@
 //! h_s = 2 X               alternative reading found in secondary summaries
 //! ```
 //! SI: x/d = (1.33e-3/√fc)(M/d³) d^0.2 V^1.33. Validity: none stated. Confidence: High (x, h_p;
-//! verbatim in [THESIS]), Low (h_s: no retrieved source states it, hence both variants).
+//! verbatim in \[THESIS\]), Low (h_s: no retrieved source states it, hence both variants).
 
 use super::{Missile, Target};
 

@@ -52,7 +52,7 @@ pub enum CeaEdfForm {
 pub enum HughesTensile {
     /// The target's f_t as given (the report: 300 psi).
     Given,
-    /// The modulus of rupture 0.63 √f'c (MPa) [LEPP].
+    /// The modulus of rupture 0.63 √f'c (MPa) \[LEPP\].
     ModulusOfRupture,
 }
 

@@ -7,8 +7,8 @@
 //! h_s/d = 5.0 x/d  (x/d < 0.7);   1.74 x/d + 2.3  (x/d ≥ 0.7)
 //! ```
 //! f_t the concrete tensile strength: the report's value, or the modulus of rupture
-//! 0.63 √σc (MPa) that [LEPP] specifies. Branches join at x/d = 0.7 as 2.520/2.506 (h_p: a small
-//! drop) and 3.500/3.518 (h_s). Validity: I_h ≤ 3500 (test range 40–3500 [LEPP]; "I < 40
+//! 0.63 √σc (MPa) that \[LEPP\] specifies. Branches join at x/d = 0.7 as 2.520/2.506 (h_p: a small
+//! drop) and 3.500/3.518 (h_s). Validity: I_h ≤ 3500 (test range 40–3500 \[LEPP\]; "I < 40
 //! corresponds to h/d < 3.5 and x/d < 0.7"). Confidence: High (x), Medium–High (h_s, h_p).
 
 use super::{Missile, Target, Validity};

@@ -4,7 +4,7 @@
 //! G = 180/√f'c · N (E/E_s)^1.25 (W/D) (V/(1000 D))^1.8,   x/d from G as NDRC
 //! β (h_s − a)/d = Kennedy h_s/d(x/d),   β (h_p − a)/d = Kennedy h_p/d(x/d),   β = (E/E_s)^0.2
 //! ```
-//! E the missile's Young's modulus, E_s that of mild steel ([`super::inputs`]
+//! E the missile's Young's modulus, E_s that of mild steel (`super::inputs`
 //! `MILD_STEEL_MODULUS_PSI`), a half the maximum aggregate size. For a steel missile x is NDRC's
 //! and h = a + d·f(x/d). Validity: that of the Kennedy relations. Confidence: Medium–Low (the
 //! half-aggregate a and both exponents are recollection).

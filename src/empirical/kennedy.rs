@@ -6,7 +6,7 @@
 //! h_s/d = 7.91 (x/d) − 5.06 (x/d)²     x/d ≤ 0.65           (DOE C.6-6)
 //! h_s/d = 2.12 + 1.36 (x/d)            0.65 ≤ x/d ≤ 11.75    (DOE C.6-5)
 //! h_p/d = 3.19 (x/d) − 0.718 (x/d)²    x/d ≤ 1.35
-//! h_p/d = 1.32 + 1.24 (x/d)            1.35 ≤ x/d ≤ 13.5     ([THESIS], verbatim)
+//! h_p/d = 1.32 + 1.24 (x/d)            1.35 ≤ x/d ≤ 13.5     (\[THESIS\], verbatim)
 //! ```
 //! Validity: 3 ≤ h/d ≤ 18 for the linear fits, i.e. x/d ≤ 11.75 (h_s) and x/d ≤ 13.5 (h_p); the
 //! quadratics cover the small-penetration end. The branches join to 4 digits (3.004/3.004 at 0.65;

@@ -7,7 +7,7 @@
 //! ```
 //! SI: G = 3.8e-5 N M/(d √fc) (V/d)^1.8. h_s and h_p follow from x/d through Kennedy's relations
 //! ([`super::kennedy`]); DOE's design factors (1.1 h_s, 1.2 h_p) are not applied. Validity: that
-//! of the Kennedy relations. Sources: G and x/d verbatim [THESIS]. Confidence: High.
+//! of the Kennedy relations. Sources: G and x/d verbatim \[THESIS\]. Confidence: High.
 
 use super::{Missile, Target};
 

@@ -34,7 +34,7 @@ pub fn penetration_in(m: &Missile, v_fps: f64, kp_ft3_per_lb: f64) -> f64 {
     12.0 * kp_ft3_per_lb * sectional_pressure_psf(m) * (1.0 + v_fps * v_fps / V2_SCALE_FPS2).log10()
 }
 
-/// Perforation thickness h_p = 2 X, in ([THESIS], verbatim).
+/// Perforation thickness h_p = 2 X, in (\[THESIS\], verbatim).
 pub fn perforation_in(x_in: f64) -> f64 {
     2.0 * x_in
 }

@@ -4,7 +4,7 @@
 //! x = (870/√σc) (W/D²) (D/c)^0.1 (V/1750)^n,   n = 10.7/σc^0.25     [in; W lb, D in, V ft/s, σc psi, c in]
 //! ```
 //! c = maximum aggregate size. SI: x/d = (2.61/√fc)(M/d³)(d/c)^0.1 (V/533.4)^n, n = 97.51/fc^0.25.
-//! Defines x only. Validity [LEPP]: σc 800–10 000 psi, W 0.3–22 000 lb, D 0.5–38 in, D/c 0.5–50,
+//! Defines x only. Validity \[LEPP\]: σc 800–10 000 psi, W 0.3–22 000 lb, D 0.5–38 in, D/c 0.5–50,
 //! V 0–3700 ft/s (ogival noses, ±15 % scatter). Confidence: High.
 
 use super::{Missile, Target, Validity};
@@ -21,7 +21,7 @@ pub fn penetration_in(m: &Missile, t: &Target, v_fps: f64) -> f64 {
         * (v_fps / 1750.0).powf(velocity_exponent(t))
 }
 
-/// Validity against [LEPP]'s ranges.
+/// Validity against \[LEPP\]'s ranges.
 pub fn validity(m: &Missile, t: &Target, v_fps: f64) -> Validity {
     Validity::all([
         Validity::range("σc", t.fc_psi, 800.0, 10_000.0, "psi"),

@@ -241,7 +241,7 @@ struct Split {
     above: Ratios,
 }
 
-/// The ratios tabulated against [`pseudo_log2`] of the rate: nodes at 16 per octave, plus the
+/// The ratios tabulated against `pseudo_log2` of the rate: nodes at 16 per octave, plus the
 /// points where a law has a kink or a jump (the quasi-static rate, Klepaczko's crossing of the
 /// static strength, the compressive law's switch), so that linear interpolation keeps them.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
@@ -254,7 +254,7 @@ pub struct Table {
 }
 
 impl Table {
-    /// Tabulate `f` from [`TABLE_LOW_PER_S`] to at least `high_per_s`, with the kinks or jumps
+    /// Tabulate `f` from `TABLE_LOW_PER_S` to at least `high_per_s`, with the kinks or jumps
     /// at the rates `kinks_per_s` (at most one per interval of 1/16 octave; `f` is the value at
     /// the kink and the limit from above is taken just past it).
     pub fn new(high_per_s: f64, kinks_per_s: &[f64], f: impl Fn(f64) -> Ratios) -> Table {
