@@ -220,6 +220,67 @@ fn too_fast(v: [f64; 3], radius_m: f64, limit2: f64) -> bool {
     !(v[0] * v[0] + v[1] * v[1] + spin * spin <= limit2)
 }
 
+/// A run of free elements with no damping or external force, for [`Free::advance`].
+struct Free<'a> {
+    /// Δt, s.
+    dt_s: f64,
+    /// 1/m, 1/m, 1/I per element.
+    inv_mass_3: &'a [[f64; 3]],
+    /// Contact sums [Fx N, Fy N, T N·m] (zeroed as read).
+    sum: &'a mut [[f64; 3]],
+    /// Total forces (output).
+    force: &'a mut [[f64; 3]],
+    /// Half-step velocities [m/s, m/s, rad/s].
+    vel: &'a mut [[f64; 3]],
+    /// Positions [x m, y m, θ rad].
+    pos: &'a mut [[f64; 3]],
+    /// Radii, m.
+    radius: &'a [f64],
+    /// Positions at the last neighbour update [x m, y m].
+    refs: &'a [[f64; 2]],
+    /// Neighbour margins, m.
+    margin: &'a [f64],
+    /// Squared speed limit, m²/s².
+    limit2: f64,
+}
+
+impl Free<'_> {
+    /// The update ([`free_undamped`]), then its checks: (some element too fast, some drifted
+    /// past its margin). Compiled for AVX where the processor has it: the same operations, four
+    /// components to an instruction instead of two.
+    fn advance(self) -> (bool, bool) {
+        #[cfg(target_arch = "x86_64")]
+        if super::bonds4::available() {
+            // SAFETY: the processor has AVX.
+            return unsafe { self.advance_avx() };
+        }
+        self.advance_here()
+    }
+
+    /// [`Free::advance`] compiled for AVX.
+    ///
+    /// # Safety
+    /// The processor must have AVX.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn advance_avx(self) -> (bool, bool) {
+        self.advance_here()
+    }
+
+    #[inline(always)]
+    fn advance_here(self) -> (bool, bool) {
+        let Free { dt_s, inv_mass_3, sum, force, vel, pos, radius, refs, margin, limit2 } = self;
+        free_undamped(dt_s, inv_mass_3.as_flattened(), sum.as_flattened_mut(), force.as_flattened_mut(), vel.as_flattened_mut(), pos.as_flattened_mut());
+        let (mut bad, mut drifted) = (false, false);
+        for q in 0..vel.len() {
+            bad |= too_fast(vel[q], radius[q], limit2);
+            let (dx, dy) = (pos[q][0] - refs[q][0], pos[q][1] - refs[q][1]);
+            drifted |= dx * dx + dy * dy > margin[q] * margin[q];
+        }
+        (bad, drifted)
+    }
+}
+
 /// The undamped central-difference update of free elements with no external force, over the
 /// components of their `[x, y, θ]` triples as flat arrays: each contact sum `sum` becomes the
 /// force `force` and is zeroed, v += Δt·F/m, x += Δt·v. The same operations in the same order
@@ -281,19 +342,21 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             let run = if flat { free_run(&motion[o..]) } else { 0 };
             if run > 0 {
                 let (a, b) = (o, o + run);
-                free_undamped(
-                    p.dt_s,
-                    cut(&el.inv_mass_3, base + a, run).as_flattened(),
-                    ss[a..b].as_flattened_mut(),
-                    fs[a..b].as_flattened_mut(),
-                    vs[a..b].as_flattened_mut(),
-                    ps[a..b].as_flattened_mut(),
-                );
-                for q in a..b {
-                    bad |= too_fast(vs[q], radius[q], limit2);
-                    let (dx, dy) = (ps[q][0] - refs[q][0], ps[q][1] - refs[q][1]);
-                    drifted |= dx * dx + dy * dy > margin[q] * margin[q];
-                }
+                let free = Free {
+                    dt_s: p.dt_s,
+                    inv_mass_3: cut(&el.inv_mass_3, base + a, run),
+                    sum: &mut ss[a..b],
+                    force: &mut fs[a..b],
+                    vel: &mut vs[a..b],
+                    pos: &mut ps[a..b],
+                    radius: &radius[a..b],
+                    refs: &refs[a..b],
+                    margin: &margin[a..b],
+                    limit2,
+                };
+                let (b1, d1) = free.advance();
+                bad |= b1;
+                drifted |= d1;
                 o = b;
                 continue;
             }
