@@ -186,10 +186,14 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     };
     let each = list.par_chunks_mut(piece).zip(force.par_chunks_mut(piece)).zip(partial.par_chunks_mut(piece / CHUNK));
     let out = records.par_iter_mut().zip(mine.into_par_iter().zip(ranges.par_iter()));
+    // `with_max_len(1)`: every piece a job of its own that an idle thread can take. Left to
+    // itself, rayon hands each of two threads about two jobs of two or three pieces, which no
+    // one can split once begun, and a thread that finishes first waits for up to three pieces.
+    // The level-2 event on two threads ran 4-8 % faster (nine of ten alternating pairs).
     if P::EXTRA {
-        each.zip(extra.par_chunks_mut(piece)).zip(out).for_each(|((a, xs), o)| run(a, xs, o));
+        each.zip(extra.par_chunks_mut(piece)).zip(out).with_max_len(1).for_each(|((a, xs), o)| run(a, xs, o));
     } else {
-        each.zip(out).for_each(|(a, o)| run(a, &mut [], o));
+        each.zip(out).with_max_len(1).for_each(|(a, o)| run(a, &mut [], o));
     }
     pieces::fix_up(sums, records);
 }

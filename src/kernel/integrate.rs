@@ -433,6 +433,8 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
             .zip(partial.par_iter_mut())
             .zip(sums.par_chunks_mut(CHUNK))
             .enumerate()
+            // Each chunk a job an idle thread can take, as the contact stage's pieces are.
+            .with_max_len(1)
             .for_each(|(k, ((((ps, vs), fs), out), ss))| *out = run(k, ps, vs, fs, ss));
     } else {
         for (k, ((((ps, vs), fs), out), ss)) in
