@@ -7,7 +7,8 @@
 #      one thread): steps, Δt, wall, element-steps per second, peak RSS; each run followed by two
 #      at once (one per core), whose slowdown bounds any two-thread sweep's efficiency;
 #   2b. one large run (the level-2 event) on one thread and on two: speed-up per pair, the cores'
-#      busy share, the summaries bitwise the same (scripts/large_run.sh; about 40 s a pair);
+#      busy share, the summaries bitwise the same, and the two cores' ceiling (two one-thread
+#      runs at once) (scripts/large_run.sh; about 80 s a pair);
 #   3. the parallel efficiency of a ballistic sweep from 1 to 2 threads and its parts (the
 #      machine's, the scheduler's; scripts/sweep_efficiency.sh): the CI scene's sweep, REPEATS
 #      pairs (about 2 minutes each); with FULL=1 also the default sweep, one pair (about 22
