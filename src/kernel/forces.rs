@@ -189,7 +189,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     // `with_max_len(1)`: every piece a job of its own that an idle thread can take. Left to
     // itself, rayon hands each of two threads about two jobs of two or three pieces, which no
     // one can split once begun, and a thread that finishes first waits for up to three pieces.
-    // The level-2 event on two threads ran 4-8 % faster (nine of ten alternating pairs).
+    // The level-2 event on two threads ran about 5 % faster (nine of ten alternating pairs).
     if P::EXTRA {
         each.zip(extra.par_chunks_mut(piece)).zip(out).with_max_len(1).for_each(|((a, xs), o)| run(a, xs, o));
     } else {
