@@ -76,7 +76,7 @@ fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
 }
 
 /// Bits of the small impact after `steps` steps, with or without the four-lane path, on one
-/// thread (the scatter) or on a pool of two (per-contact forces, then the gather).
+/// thread (the scatter) or on a pool of two (the scatter in pieces, `kernel::pieces`).
 fn impact_bits(four_lanes: bool, threads: usize, steps: u64) -> (Vec<u64>, u64, f64) {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     pool.install(|| {

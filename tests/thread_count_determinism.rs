@@ -148,9 +148,10 @@ fn pieces_of_one_chunk_give_the_one_thread_bits_on_2_and_8_threads() {
 
 #[test]
 fn held_ends_give_the_same_bits_on_one_thread_and_on_the_pool() {
-    // Every row has a kinematic element at each end, so on one thread the motion stage takes
-    // runs of free elements over flat arrays between them and the general update for the held
-    // ones; the pool's motion stage gathers and updates element by element.
+    // Every row has a kinematic element at each end, so the motion stage takes runs of free
+    // elements over flat arrays between them and the general update for the held ones; on the
+    // pool it does so chunk by chunk, the runs cut at the chunks' ends, from sums the contact
+    // stage made in pieces.
     let run = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         pool.install(|| {
