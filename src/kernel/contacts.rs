@@ -86,17 +86,23 @@ pub struct Contacts {
     /// element's entries are in increasing contact order (derived from `list`).
     #[serde(skip)]
     pub adj: Vec<u32>,
-    /// Per piece of `piece_contacts` contacts, the elements it scatters into directly: the plan
-    /// of the contact stage's scatter on the pool (`pieces::plan`; derived from `list`, made by
-    /// [`Contacts::plan_pieces`] and kept up with the list from then on).
+    /// Per piece of the list cut at `piece_cuts`, the elements it scatters into directly: the
+    /// plan of the contact stage's scatter on the pool (`pieces::plan`; derived from `list`,
+    /// made by [`Contacts::plan_pieces`] and kept up with the list from then on).
     #[serde(skip)]
     pub piece_ranges: Vec<std::ops::Range<u32>>,
+    /// Where the list is cut into pieces (`pieces::cuts`): piece p is `piece_cuts[p]..piece_cuts[p + 1]`.
+    #[serde(skip)]
+    pub piece_cuts: Vec<usize>,
+    /// The pieces' spans, one per thread: span s is pieces `piece_spans[s]..piece_spans[s + 1]`.
+    #[serde(skip)]
+    pub piece_spans: Vec<usize>,
     /// Scratch of the plan: each element's first piece.
     #[serde(skip)]
     first_piece: Vec<u32>,
-    /// Contacts per piece of `piece_ranges` (0: no plan).
+    /// The threads and the longest piece, contacts, the cuts are made for (None: no plan).
     #[serde(skip)]
-    pub piece_contacts: usize,
+    pub piece_rule: Option<(usize, usize)>,
     #[serde(skip)]
     merged: Vec<Contact>,
     #[serde(skip)]
@@ -153,16 +159,22 @@ impl Contacts {
             self.adj[self.fill[c.j as usize] as usize] = (k << 1) | 1;
             self.fill[c.j as usize] += 1;
         }
-        if self.piece_contacts > 0 {
-            super::pieces::plan(&self.list, self.piece_contacts, n_elements, &mut self.first_piece, &mut self.piece_ranges);
+        if self.piece_rule.is_some() {
+            self.plan(n_elements);
         }
     }
 
-    /// Plan the scatter on the pool for pieces of `piece` contacts (kept up with the list from
-    /// now on, by every adjacency rebuild).
-    pub fn plan_pieces(&mut self, piece: usize, n_elements: usize) {
-        self.piece_contacts = piece;
-        super::pieces::plan(&self.list, piece, n_elements, &mut self.first_piece, &mut self.piece_ranges);
+    /// Plan the scatter on `threads` threads in pieces of `most` contacts at most (kept up with
+    /// the list from now on, by every adjacency rebuild).
+    pub fn plan_pieces(&mut self, threads: usize, most: usize, n_elements: usize) {
+        self.piece_rule = Some((threads, most));
+        self.plan(n_elements);
+    }
+
+    fn plan(&mut self, n_elements: usize) {
+        let (threads, most) = self.piece_rule.expect("a rule to plan by");
+        super::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
+        super::pieces::plan(&self.list, &self.piece_cuts, n_elements, &mut self.first_piece, &mut self.piece_ranges);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's

@@ -20,7 +20,7 @@ use std::ops::Range;
 use rayon::prelude::*;
 
 use super::geometry::{self, Geometry, Separation, separation};
-use super::{bonds4, mixed4, pieces};
+use super::{bonds4, mixed4, pieces, spans};
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
@@ -60,9 +60,10 @@ pub enum Out<'a> {
     Stored,
     /// Also added to their elements' sums [Fx N, Fy N, T N·m] (zero on entry), on this thread.
     Serial(&'a mut [[f64; 3]]),
-    /// The same sums, made by pieces of `piece` contacts on the pool (`pieces`): `ranges` is
-    /// each piece's range of elements (`pieces::plan`), `records` scratch space.
-    Pieces { sums: &'a mut [[f64; 3]], ranges: &'a [Range<u32>], piece: usize, records: &'a mut Vec<Vec<pieces::Record>> },
+    /// The same sums, made on the pool by the pieces the list is cut into at `cuts`, in
+    /// `spans` (`pieces::cuts`): `ranges` is each piece's range of elements (`pieces::plan`),
+    /// `records` scratch space.
+    Pieces { sums: &'a mut [[f64; 3]], ranges: &'a [Range<u32>], cuts: &'a [usize], spans: &'a [usize], records: &'a mut Vec<Vec<pieces::Record>> },
 }
 
 impl law::PartsVisitor for Stage<'_> {
@@ -91,12 +92,15 @@ impl law::PartsVisitor for Stage<'_> {
                     (false, _) => scatter::<P, false, false, _>(at, list, extra, force, partial, sums),
                 }
             }
-            Out::Pieces { sums, ranges, piece, records } => match (record, four) {
-                (true, true) => parallel_scatter::<P, true, true>(at, list, extra, force, partial, sums, ranges, piece, records),
-                (false, true) => parallel_scatter::<P, false, true>(at, list, extra, force, partial, sums, ranges, piece, records),
-                (true, false) => parallel_scatter::<P, true, false>(at, list, extra, force, partial, sums, ranges, piece, records),
-                (false, false) => parallel_scatter::<P, false, false>(at, list, extra, force, partial, sums, ranges, piece, records),
-            },
+            Out::Pieces { sums, ranges, cuts, spans, records } => {
+                let pieces = Pieces { sums, ranges, cuts, spans, records };
+                match (record, four) {
+                    (true, true) => parallel_scatter::<P, true, true>(at, list, extra, force, partial, pieces),
+                    (false, true) => parallel_scatter::<P, false, true>(at, list, extra, force, partial, pieces),
+                    (true, false) => parallel_scatter::<P, true, false>(at, list, extra, force, partial, pieces),
+                    (false, false) => parallel_scatter::<P, false, false>(at, list, extra, force, partial, pieces),
+                }
+            }
         }
     }
 }
@@ -153,12 +157,22 @@ unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut
     each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
 }
 
-/// What one piece writes besides its contacts: its records, its range's sums and that range.
-type PieceOut<'a> = (&'a mut Vec<pieces::Record>, (&'a mut [[f64; 3]], &'a Range<u32>));
+/// The scatter on the pool's plan (`Out::Pieces`).
+struct Pieces<'a> {
+    /// The elements' sums.
+    sums: &'a mut [[f64; 3]],
+    /// Each piece's range of elements.
+    ranges: &'a [Range<u32>],
+    /// Where the list is cut.
+    cuts: &'a [usize],
+    /// Each thread's span of pieces.
+    spans: &'a [usize],
+    /// Each piece's records.
+    records: &'a mut Vec<Vec<pieces::Record>>,
+}
 
-/// Several threads: pieces of `piece` contacts (whole chunks) scatter their forces (`pieces`),
-/// then the records are added in order.
-#[allow(clippy::too_many_arguments)]
+/// Several threads: the pieces (whole chunks) scatter their forces (`pieces`), each thread
+/// taking its span's (`spans`), then the records are added in order.
 #[inline(never)]
 fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
@@ -166,16 +180,22 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     extra: &mut [Extra],
     force: &mut [ContactForce],
     partial: &mut [Dissipation],
-    sums: &mut [[f64; 3]],
-    ranges: &[Range<u32>],
-    piece: usize,
-    records: &mut Vec<Vec<pieces::Record>>,
+    Pieces { sums, ranges, cuts, spans: starts, records }: Pieces<'_>,
 ) {
-    assert!(piece > 0 && piece.is_multiple_of(CHUNK), "pieces of whole chunks: the dissipation is summed per chunk");
-    assert_eq!(ranges.len(), list.len().div_ceil(piece), "a plan for another list");
+    assert!(cuts.iter().rev().skip(1).all(|c| c.is_multiple_of(CHUNK)), "pieces of whole chunks: the dissipation is summed per chunk");
+    assert!(cuts.last() == Some(&list.len()) && ranges.len() + 1 == cuts.len(), "a plan for another list");
     records.resize_with(ranges.len(), Vec::new);
-    let mine = pieces::split(sums, ranges);
-    let run = |((cs, fs), ds): ((&mut [Contact], &mut [ContactForce]), &mut [Dissipation]), xs: &mut [Extra], (rs, (s, r)): PieceOut<'_>| {
+    let own = ranges.iter().map(|r| r.start as usize..r.end as usize);
+    let mine = pieces::split(&mut *sums, own);
+    let n = ranges.len();
+    let xs: Vec<&mut [Extra]> = if P::EXTRA { pieces::split(extra, pieces::ranges(cuts, 1)) } else { (0..n).map(|_| &mut [][..]).collect() };
+    let jobs: Vec<_> = (pieces::split(list, pieces::ranges(cuts, 1)).into_iter())
+        .zip(pieces::split(force, pieces::ranges(cuts, 1)))
+        .zip(pieces::split(partial, pieces::ranges(cuts, CHUNK)))
+        .zip(xs)
+        .zip(records.iter_mut().zip(mine).zip(ranges))
+        .collect();
+    spans::run(jobs, starts, |((((cs, fs), ds), xs), ((rs, s), r))| {
         let out = pieces::PieceSums::new(s, r.start, rs);
         #[cfg(target_arch = "x86_64")]
         if FOUR {
@@ -183,18 +203,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
             return unsafe { scatter_avx::<P, RECORD, _>(at, cs, xs, fs, ds, out) };
         }
         scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
-    };
-    let each = list.par_chunks_mut(piece).zip(force.par_chunks_mut(piece)).zip(partial.par_chunks_mut(piece / CHUNK));
-    let out = records.par_iter_mut().zip(mine.into_par_iter().zip(ranges.par_iter()));
-    // `with_max_len(1)`: every piece a job of its own that an idle thread can take. Left to
-    // itself, rayon hands each of two threads about two jobs of two or three pieces, which no
-    // one can split once begun, and a thread that finishes first waits for up to three pieces.
-    // The level-2 event on two threads ran about 5 % faster (nine of ten alternating pairs).
-    if P::EXTRA {
-        each.zip(extra.par_chunks_mut(piece)).zip(out).with_max_len(1).for_each(|((a, xs), o)| run(a, xs, o));
-    } else {
-        each.zip(out).with_max_len(1).for_each(|(a, o)| run(a, &mut [], o));
-    }
+    });
     pieces::fix_up(sums, records);
 }
 

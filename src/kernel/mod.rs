@@ -25,6 +25,7 @@ pub mod integrate;
 pub mod law;
 pub mod neighbours;
 pub mod pieces;
+pub mod spans;
 pub mod stability;
 pub mod state;
 
@@ -141,8 +142,8 @@ pub struct Model {
     /// step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
     /// Contacts per piece of the contact stage's scatter on the pool at most (`pieces`; a
-    /// multiple of `forces::CHUNK`; fewer where the pool would get too few pieces, see
-    /// `pieces::piece_len`). The bits do not depend on it; smaller pieces balance the threads
+    /// multiple of `forces::CHUNK`; the pieces shrink to one chunk towards the end of the list,
+    /// see `pieces::cuts`). The bits do not depend on it; smaller pieces balance the threads
     /// better and send more contributions through the serial fix-up.
     pub scatter_piece_contacts: usize,
     /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
@@ -219,19 +220,17 @@ impl Model {
             s.contact_sums = vec![[0.0; 3]; n];
         }
         let st = &mut self.state;
-        // On the pool: the pieces' length for this list and pool, the plan made again if it
-        // changed (one thread needs neither).
-        let piece = parallel.then(|| pieces::piece_len(st.contacts.len(), rayon::current_num_threads(), self.scatter_piece_contacts));
-        if let Some(piece) = piece
-            && st.contacts.piece_contacts != piece
-        {
-            st.contacts.plan_pieces(piece, n);
+        // On the pool: the plan made again if the pool or the cap changed (one thread needs
+        // none).
+        let rule = (rayon::current_num_threads(), self.scatter_piece_contacts);
+        if parallel && st.contacts.piece_rule != Some(rule) {
+            st.contacts.plan_pieces(rule.0, rule.1, n);
         }
-        let contacts::Contacts { list, extra, force, piece_ranges, .. } = &mut st.contacts;
+        let contacts::Contacts { list, extra, force, piece_ranges, piece_cuts, piece_spans, .. } = &mut st.contacts;
         let sums = &mut s.contact_sums[..];
-        let out = match piece {
-            Some(piece) => forces::Out::Pieces { sums, ranges: piece_ranges, piece, records: &mut s.records },
-            None => forces::Out::Serial(sums),
+        let out = match parallel {
+            true => forces::Out::Pieces { sums, ranges: piece_ranges, cuts: piece_cuts, spans: piece_spans, records: &mut s.records },
+            false => forces::Out::Serial(sums),
         };
         let stage = forces::Stage {
             pos: &st.pos,

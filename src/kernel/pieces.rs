@@ -18,20 +18,57 @@
 use super::contacts::{Contact, ContactForce};
 use super::forces::Sums;
 
-/// Contacts per piece at most by default: eight chunks (see `Model::scatter_piece_contacts`).
-pub const PIECE: usize = 8 * super::forces::CHUNK;
+/// Contacts per piece at most by default: sixteen chunks (see `Model::scatter_piece_contacts`).
+/// Only the first pieces of a span are this long, and they are its own thread's: fewer pieces,
+/// fewer contributions through the records.
+pub const PIECE: usize = 16 * super::forces::CHUNK;
 
-/// Pieces per thread aimed at: enough for the pool to even out pieces of unequal cost (the
-/// peers' beam, 39 726 contacts, in pieces of eight chunks made three pieces for two threads
-/// and ran 1.2× slower than the chunks of the gather before it).
-const PIECES_PER_THREAD: usize = 4;
-
-/// Contacts per piece for `contacts` contacts on `threads` threads, pieces of `most` contacts
-/// at most: whole chunks, at least one.
-pub fn piece_len(contacts: usize, threads: usize, most: usize) -> usize {
+/// The pieces for `contacts` contacts on `threads` threads, pieces of `most` contacts at most
+/// (at least one chunk). The list is cut into one span of about equal chunks per thread, each
+/// taken from its front by its thread and from its back by the others when they are done
+/// (`spans`); within a span the pieces shrink towards its back, `most`, …, 8, 4, 2 chunks, so
+/// that what the others take first is small. (The level-2 event on two threads, in even pieces
+/// of eight chunks that rayon halved between the threads, idled ~6.5 % of its contact stage,
+/// the two threads' last pieces ending ~0.3 ms apart per step; in spans, ~0.15 ms.) Pieces of
+/// one chunk at the very back were no better: each cut sends a band of the lattice through
+/// the records.
+///
+/// `cuts` gets each piece's first contact and then `contacts`, so piece p is
+/// `cuts[p]..cuts[p + 1]`; `spans` gets each span's first piece and then the number of pieces.
+/// Every piece is whole chunks (the last may end the list).
+pub fn cuts(contacts: usize, threads: usize, most: usize, cuts: &mut Vec<usize>, spans: &mut Vec<usize>) {
     let chunk = super::forces::CHUNK;
-    let chunks = contacts / (PIECES_PER_THREAD * threads.max(1)) / chunk;
-    (chunks.max(1) * chunk).min(most.max(chunk))
+    let most = (most / chunk).max(1);
+    let chunks = contacts.div_ceil(chunk);
+    let n_spans = threads.clamp(1, chunks.max(1));
+    cuts.clear();
+    spans.clear();
+    let mut sizes = Vec::new();
+    for s in 0..n_spans {
+        let (from, to) = (chunks * s / n_spans, chunks * (s + 1) / n_spans);
+        // From the back: 2, 4, 8, … up to `most`; the front piece takes what is left, or
+        // joins the next if it would be less than half of it.
+        sizes.clear();
+        let (mut left, mut next) = (to - from, most.min(2));
+        while left > 0 {
+            let size = next.min(left);
+            left -= size;
+            if size < next.div_ceil(2) && !sizes.is_empty() {
+                *sizes.last_mut().expect("not empty") += size;
+            } else {
+                sizes.push(size);
+            }
+            next = (2 * next).min(most);
+        }
+        spans.push(cuts.len());
+        let mut at = from;
+        for size in sizes.iter().rev() {
+            cuts.push(at * chunk);
+            at += size;
+        }
+    }
+    spans.push(cuts.len());
+    cuts.push(contacts);
 }
 
 /// One contribution to an element outside the piece's range, kept for [`fix_up`].
@@ -43,14 +80,15 @@ pub struct Record {
     pub add: [f64; 3],
 }
 
-/// For pieces of `piece` contacts (in list order), the range of elements each piece writes
+/// For the pieces cut at `cuts` (see [`cuts`]), the range of elements each piece writes
 /// straight into, written to `out` (one per piece): elements that piece is the first to touch,
 /// the ranges disjoint and increasing. `first` is scratch space.
-pub fn plan(list: &[Contact], piece: usize, n_elements: usize, first: &mut Vec<u32>, out: &mut Vec<std::ops::Range<u32>>) {
+pub fn plan(list: &[Contact], cuts: &[usize], n_elements: usize, first: &mut Vec<u32>, out: &mut Vec<std::ops::Range<u32>>) {
+    assert_eq!(cuts.last(), Some(&list.len()), "cuts for another list");
     first.clear();
     first.resize(n_elements, u32::MAX);
-    for (p, cs) in list.chunks(piece).enumerate() {
-        for c in cs {
+    for (p, w) in cuts.windows(2).enumerate() {
+        for c in &list[w[0]..w[1]] {
             for e in [c.i, c.j] {
                 let f = &mut first[e as usize];
                 *f = (*f).min(p as u32);
@@ -59,7 +97,7 @@ pub fn plan(list: &[Contact], piece: usize, n_elements: usize, first: &mut Vec<u
     }
     // Each piece's longest run of elements it touches first; elements no contact touches
     // (u32::MAX: held supports, say) join any run, since nothing is added to them.
-    let n_pieces = list.len().div_ceil(piece);
+    let n_pieces = cuts.len() - 1;
     out.clear();
     out.resize(n_pieces, 0..0);
     let (mut start, mut cur) = (0, u32::MAX);
@@ -87,17 +125,24 @@ pub fn plan(list: &[Contact], piece: usize, n_elements: usize, first: &mut Vec<u
     }
 }
 
-/// Split `sums` into the pieces' ranges of `plan` (the rest is left to the fix-up).
-pub fn split<'a>(mut sums: &'a mut [[f64; 3]], plan: &[std::ops::Range<u32>]) -> Vec<&'a mut [[f64; 3]]> {
+/// Split `all` into the slices of `ranges` (disjoint and increasing; what lies between them is
+/// left out): the sums into the ranges of a [`plan`], the contact list into pieces.
+pub fn split<T>(mut all: &mut [T], ranges: impl Iterator<Item = std::ops::Range<usize>>) -> Vec<&mut [T]> {
     let mut at = 0;
-    plan.iter()
+    ranges
         .map(|r| {
-            let (_, from_start) = std::mem::take(&mut sums).split_at_mut(r.start as usize - at);
+            let (_, from_start) = std::mem::take(&mut all).split_at_mut(r.start - at);
             let (mine, rest) = from_start.split_at_mut(r.len());
-            (sums, at) = (rest, r.end as usize);
+            (all, at) = (rest, r.end);
             mine
         })
         .collect()
+}
+
+/// The pieces of [`cuts`] as ranges, each scaled down by `per` (contacts per item: 1 for the
+/// contacts, `forces::CHUNK` for the per-chunk dissipation), the last rounded up.
+pub fn ranges(cuts: &[usize], per: usize) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
+    cuts.windows(2).map(move |w| w[0] / per..w[1].div_ceil(per))
 }
 
 /// One piece's side of the scatter: straight into its range, into `records` otherwise.
@@ -228,18 +273,24 @@ mod tests {
         sums
     }
 
-    fn pieced(list: &[Contact], n: usize, piece: usize, order: &[usize]) -> (Vec<[f64; 3]>, usize) {
+    /// Cuts every `piece` contacts.
+    fn even(list: &[Contact], piece: usize) -> Vec<usize> {
+        (0..list.len()).step_by(piece).chain([list.len()]).collect()
+    }
+
+    fn pieced(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, usize) {
         let (mut first, mut ranges) = (Vec::new(), Vec::new());
-        plan(list, piece, n, &mut first, &mut ranges);
+        plan(list, cuts, n, &mut first, &mut ranges);
         let mut sums = vec![[0.0; 3]; n];
         let mut records = vec![Vec::new(); ranges.len()];
         {
-            let mut mine: Vec<Option<&mut [[f64; 3]]>> = split(&mut sums, &ranges).into_iter().map(Some).collect();
+            let own = ranges.iter().map(|r| r.start as usize..r.end as usize);
+            let mut mine: Vec<Option<&mut [[f64; 3]]>> = split(&mut sums, own).into_iter().map(Some).collect();
             let mut kept: Vec<Option<&mut Vec<Record>>> = records.iter_mut().map(Some).collect();
             // The pieces in any order: as the pool may run them.
             for &p in order {
                 let mut s = PieceSums::new(mine[p].take().unwrap(), ranges[p].start, kept[p].take().unwrap());
-                for (k, c) in list.iter().enumerate().skip(p * piece).take(piece) {
+                for (k, c) in list.iter().enumerate().take(cuts[p + 1]).skip(cuts[p]) {
                     s.add(c, &force(k));
                 }
                 s.finish();
@@ -258,32 +309,59 @@ mod tests {
         let n = 400;
         let l = list(n as u32);
         let want = serial(&l, n);
-        for piece in [1, 5, 64, 333, l.len()] {
-            let n_pieces = l.len().div_ceil(piece);
+        // Even pieces, and pieces shrinking along the list as `cuts` makes them.
+        let shrinking: Vec<usize> = [0, 300, 500, 620, 700, 740, 760, 770].into_iter().filter(|&c| c < l.len()).chain([l.len()]).collect();
+        assert!(shrinking.len() > 6, "the list is too short for the shrinking pieces");
+        for cuts in [1, 5, 64, 333, l.len()].map(|piece| even(&l, piece)).into_iter().chain([shrinking]) {
+            let n_pieces = cuts.len() - 1;
             let forward: Vec<usize> = (0..n_pieces).collect();
             let backward: Vec<usize> = (0..n_pieces).rev().collect();
-            let (a, kept) = pieced(&l, n, piece, &forward);
-            let (b, _) = pieced(&l, n, piece, &backward);
-            assert!(bits(&a) == bits(&want), "pieces of {piece}: sums differ from one thread's");
-            assert!(bits(&b) == bits(&want), "pieces of {piece} run backwards: sums differ");
+            let (a, kept) = pieced(&l, n, &cuts, &forward);
+            let (b, _) = pieced(&l, n, &cuts, &backward);
+            let first = cuts[1];
+            assert!(bits(&a) == bits(&want), "{n_pieces} pieces, the first of {first}: sums differ from one thread's");
+            assert!(bits(&b) == bits(&want), "{n_pieces} pieces, the first of {first}, run backwards: sums differ");
             if n_pieces > 1 {
-                assert!(kept > 0, "pieces of {piece}: nothing went through the records");
+                assert!(kept > 0, "{n_pieces} pieces: nothing went through the records");
             } else {
                 assert_eq!(kept, 0, "one piece owns every element it touches");
             }
         }
     }
 
-    #[test]
-    fn pieces_are_whole_chunks_about_four_per_thread_and_never_above_the_cap() {
+    /// Piece lengths in chunks, span by span.
+    fn chunks_of(contacts: usize, threads: usize, most: usize) -> Vec<Vec<usize>> {
         let chunk = crate::kernel::forces::CHUNK;
-        // The peers' beam on two threads: 39 726 contacts in pieces of two chunks (ten pieces).
-        assert_eq!(piece_len(39_726, 2, PIECE), 2 * chunk);
-        // The level-2 event: 166 243 contacts, capped at eight chunks.
-        assert_eq!(piece_len(166_243, 2, PIECE), PIECE);
-        // Small lists: one chunk; the cap below a chunk still gives a chunk.
-        assert_eq!(piece_len(3_000, 8, PIECE), chunk);
-        assert_eq!(piece_len(166_243, 2, 0), chunk);
+        let (mut c, mut s) = (Vec::new(), Vec::new());
+        cuts(contacts, threads, most, &mut c, &mut s);
+        assert_eq!((c[0], *c.last().unwrap()), (0, contacts), "the cuts must span the list");
+        assert!(c.windows(2).all(|w| w[0] < w[1]), "empty pieces: {c:?}");
+        assert!(c[..c.len() - 1].iter().all(|&k| k % chunk == 0), "pieces of whole chunks: {c:?}");
+        assert_eq!((s[0], *s.last().unwrap()), (0, c.len() - 1), "the spans must cover the pieces");
+        let len = |p: usize| c[p + 1].div_ceil(chunk) - c[p] / chunk;
+        s.windows(2).map(|w| (w[0]..w[1]).map(len).collect()).collect()
+    }
+
+    #[test]
+    fn a_span_per_thread_of_whole_chunks_shrinking_to_two_and_never_above_half_again_the_cap() {
+        // The level-2 event on two threads: 166 243 contacts, 82 chunks, two spans of 41.
+        assert_eq!(chunks_of(166_243, 2, PIECE), vec![vec![11, 16, 8, 4, 2]; 2]);
+        // The peers' beam on two threads: 39 726 contacts, 20 chunks.
+        assert_eq!(chunks_of(39_726, 2, PIECE), vec![vec![4, 4, 2]; 2]);
+        // Spans differ by a chunk at most; small lists: fewer spans than threads; a cap below
+        // a chunk still gives a chunk.
+        assert_eq!(chunks_of(5 * 2048, 2, PIECE), [vec![2], vec![3]]);
+        assert_eq!(chunks_of(9 * 2048, 1, 2 * 2048), [vec![1, 2, 2, 2, 2]]);
+        assert_eq!(chunks_of(3_000, 8, PIECE), [vec![1], vec![1]]);
+        assert_eq!(chunks_of(1_000, 2, PIECE), [vec![1]]);
+        assert!(chunks_of(166_243, 2, 0).iter().flatten().all(|&c| c == 1));
+        for threads in [1, 2, 3, 8] {
+            for span in chunks_of(166_243, threads, PIECE) {
+                let tail = &span[1..];
+                assert!(tail.windows(2).all(|w| w[0] >= w[1]) && tail.last() <= Some(&2), "{threads} threads: {span:?}");
+                assert!(span.iter().all(|&c| c <= 16 + 8), "{threads} threads: {span:?}");
+            }
+        }
     }
 
     #[test]
@@ -291,7 +369,7 @@ mod tests {
         let n = 400;
         let l = list(n as u32);
         let (mut first, mut ranges) = (Vec::new(), Vec::new());
-        plan(&l, 64, n, &mut first, &mut ranges);
+        plan(&l, &even(&l, 64), n, &mut first, &mut ranges);
         let mut end = 0;
         for (p, r) in ranges.iter().enumerate() {
             assert!(r.start >= end, "range {p} {r:?} overlaps the one before (ending at {end})");
