@@ -142,9 +142,10 @@ pub struct Model {
     /// step on the peers' beam, about a tenth of its step).
     pub record_contact_forces: bool,
     /// Contacts per piece of the contact stage's scatter on the pool at most (`pieces`; a
-    /// multiple of `forces::CHUNK`; the pieces shrink to one chunk towards the end of the list,
-    /// see `pieces::cuts`). The bits do not depend on it; smaller pieces balance the threads
-    /// better and send more contributions through the serial fix-up.
+    /// multiple of `forces::CHUNK`; only the front pieces of each thread's span are this long,
+    /// the others shrink to two chunks at its back, see `pieces::cuts`). The bits do not depend
+    /// on it; smaller pieces balance the threads better and send more contributions through the
+    /// serial fix-up.
     pub scatter_piece_contacts: usize,
     /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
     /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
