@@ -29,9 +29,9 @@ pub const PIECE: usize = 16 * super::forces::CHUNK;
 /// (`spans`); within a span the pieces shrink towards its back, `most`, …, 8, 4, 2 chunks, so
 /// that what the others take first is small. (The level-2 event on two threads, in even pieces
 /// of eight chunks that rayon halved between the threads, idled ~6.5 % of its contact stage,
-/// the two threads' last pieces ending ~0.3 ms apart per step; in spans, ~0.15 ms.) Pieces of
-/// one chunk at the very back were no better: each cut sends a band of the lattice through
-/// the records.
+/// the two threads' last pieces ending 0.29–0.30 ms apart per step; in spans, 0.16–0.21 ms.)
+/// Pieces of one chunk at the very back were no better: each cut sends a band of the lattice
+/// through the records.
 ///
 /// `cuts` gets each piece's first contact and then `contacts`, so piece p is
 /// `cuts[p]..cuts[p + 1]`; `spans` gets each span's first piece and then the number of pieces.
