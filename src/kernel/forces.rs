@@ -60,10 +60,8 @@ pub enum Out<'a> {
     Stored,
     /// Also added to their elements' sums [Fx N, Fy N, T N·m] (zero on entry), on this thread.
     Serial(&'a mut [[f64; 3]]),
-    /// The same sums, made on the pool by the pieces the list is cut into at `cuts`, in
-    /// `spans` (`pieces::cuts`): `ranges` is each piece's range of elements (`pieces::plan`),
-    /// `records` scratch space.
-    Pieces { sums: &'a mut [[f64; 3]], ranges: &'a [Range<u32>], cuts: &'a [usize], spans: &'a [usize], records: &'a mut Vec<Vec<pieces::Record>> },
+    /// The same sums, made on the pool by the pieces of a plan.
+    Pieces(Pieces<'a>),
 }
 
 impl law::PartsVisitor for Stage<'_> {
@@ -92,15 +90,12 @@ impl law::PartsVisitor for Stage<'_> {
                     (false, _) => scatter::<P, false, false, _>(at, list, extra, force, partial, sums),
                 }
             }
-            Out::Pieces { sums, ranges, cuts, spans, records } => {
-                let pieces = Pieces { sums, ranges, cuts, spans, records };
-                match (record, four) {
-                    (true, true) => parallel_scatter::<P, true, true>(at, list, extra, force, partial, pieces),
-                    (false, true) => parallel_scatter::<P, false, true>(at, list, extra, force, partial, pieces),
-                    (true, false) => parallel_scatter::<P, true, false>(at, list, extra, force, partial, pieces),
-                    (false, false) => parallel_scatter::<P, false, false>(at, list, extra, force, partial, pieces),
-                }
-            }
+            Out::Pieces(pieces) => match (record, four) {
+                (true, true) => parallel_scatter::<P, true, true>(at, list, extra, force, partial, pieces),
+                (false, true) => parallel_scatter::<P, false, true>(at, list, extra, force, partial, pieces),
+                (true, false) => parallel_scatter::<P, true, false>(at, list, extra, force, partial, pieces),
+                (false, false) => parallel_scatter::<P, false, false>(at, list, extra, force, partial, pieces),
+            },
         }
     }
 }
@@ -157,18 +152,19 @@ unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut
     each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
 }
 
-/// The scatter on the pool's plan (`Out::Pieces`).
-struct Pieces<'a> {
-    /// The elements' sums.
-    sums: &'a mut [[f64; 3]],
+/// The scatter on the pool ([`Out::Pieces`]): the list cut into pieces in spans, one per thread
+/// (`pieces::cuts`), and where each piece adds its forces (`pieces::plan`).
+pub struct Pieces<'a> {
+    /// The elements' sums [Fx N, Fy N, T N·m], zero on entry.
+    pub sums: &'a mut [[f64; 3]],
     /// Each piece's range of elements.
-    ranges: &'a [Range<u32>],
-    /// Where the list is cut.
-    cuts: &'a [usize],
-    /// Each thread's span of pieces.
-    spans: &'a [usize],
-    /// Each piece's records.
-    records: &'a mut Vec<Vec<pieces::Record>>,
+    pub ranges: &'a [Range<u32>],
+    /// Where the list is cut: piece p is `cuts[p]..cuts[p + 1]`.
+    pub cuts: &'a [usize],
+    /// Each thread's span of pieces: span s is pieces `spans[s]..spans[s + 1]`.
+    pub spans: &'a [usize],
+    /// Each piece's records (scratch space).
+    pub records: &'a mut Vec<Vec<pieces::Record>>,
 }
 
 /// Several threads: the pieces (whole chunks) scatter their forces (`pieces`), each thread

@@ -229,9 +229,10 @@ impl Model {
         }
         let contacts::Contacts { list, extra, force, piece_ranges, piece_cuts, piece_spans, .. } = &mut st.contacts;
         let sums = &mut s.contact_sums[..];
-        let out = match parallel {
-            true => forces::Out::Pieces { sums, ranges: piece_ranges, cuts: piece_cuts, spans: piece_spans, records: &mut s.records },
-            false => forces::Out::Serial(sums),
+        let out = if parallel {
+            forces::Out::Pieces(forces::Pieces { sums, ranges: piece_ranges, cuts: piece_cuts, spans: piece_spans, records: &mut s.records })
+        } else {
+            forces::Out::Serial(sums)
         };
         let stage = forces::Stage {
             pos: &st.pos,
