@@ -68,7 +68,7 @@ pub(crate) const TOUCH: f64 = 1e-9;
 pub(crate) fn bonds_within(centres: &[[f64; 2]], radius_m: f64, margin_m: f64) -> Vec<(u32, u32)> {
     let r = vec![radius_m; centres.len()];
     let mut out = Vec::new();
-    BroadPhase::default().pairs(|e| centres[e], &r, |_| 0.5 * margin_m, None, &mut out);
+    BroadPhase::default().pairs(|e| centres[e], &r, |_| 0.5 * margin_m, None, false, &mut out);
     out
 }
 
@@ -230,7 +230,7 @@ fn relax_overlaps(centres: &mut [[f64; 2]], r: f64, b: [f64; 4]) {
     let mut pairs = Vec::new();
     let mut shift = vec![[0.0f64; 2]; centres.len()];
     for _ in 0..20_000 {
-        bp.pairs(|e| centres[e], &radii, |_| 0.0, None, &mut pairs);
+        bp.pairs(|e| centres[e], &radii, |_| 0.0, None, false, &mut pairs);
         let mut worst = 0.0f64;
         shift.iter_mut().for_each(|s| *s = [0.0, 0.0]);
         for &(i, j) in &pairs {

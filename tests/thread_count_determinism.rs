@@ -85,8 +85,8 @@ fn a_run_that_borrows_idle_cores_now_and_then_gives_the_bits_of_a_serial_run() {
 fn recording_contact_forces_changes_no_bit_and_gives_forces_whose_gather_is_the_scattered_sum() {
     // The contact stage adds each force to its two elements as it goes and keeps no
     // per-contact copy unless asked: asking must change nothing else, the copy must be the
-    // same on any thread count, and summing it per element over the adjacency (a gather, in
-    // the adjacency's fixed order) must give, bit for bit, the element forces the scatter made.
+    // same on any thread count, and summing it per element in contact order (a gather) must
+    // give, bit for bit, the element forces the scatter made.
     let run = |threads: usize, record: bool| {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         pool.install(|| {
@@ -104,21 +104,27 @@ fn recording_contact_forces_changes_no_bit_and_gives_forces_whose_gather_is_the_
     assert!(plain == parallel, "two threads differ from one");
     assert!(forces_serial.iter().any(|&b| b != 0), "no contact carried a force");
     assert!(forces_serial == forces_parallel, "the recorded forces differ between one and two threads");
-    // The impact has no gravity, load or damping: an element's force is its contacts' sum.
+    // The impact has no gravity, load or damping: an element's force is its contacts' sum,
+    // gathered here per element over its own list of contacts, in increasing contact order.
     let c = &m.state.contacts;
+    let mut of: Vec<Vec<(usize, bool)>> = vec![vec![]; m.el.len()];
+    for (k, ct) in c.list.iter().enumerate() {
+        of[ct.i as usize].push((k, false));
+        of[ct.j as usize].push((k, true));
+    }
     let mut gathered = 0;
-    for e in 0..m.el.len() {
+    for (e, mine) in of.iter().enumerate() {
         let mut g = [0.0f64; 3];
-        for &a in &c.adj[c.start[e] as usize..c.start[e + 1] as usize] {
-            let f = &c.force[(a >> 1) as usize];
-            if a & 1 == 0 {
-                g = [g[0] + f.fx, g[1] + f.fy, g[2] + f.ti];
-            } else {
+        for &(k, as_j) in mine {
+            let f = &c.force[k];
+            if as_j {
                 g = [g[0] - f.fx, g[1] - f.fy, g[2] + f.tj];
+            } else {
+                g = [g[0] + f.fx, g[1] + f.fy, g[2] + f.ti];
             }
         }
         assert!(g.map(f64::to_bits) == m.state.force[e].map(f64::to_bits), "element {e}: gathered {g:?}, scattered {:?}", m.state.force[e]);
-        gathered += (c.start[e + 1] > c.start[e]) as usize;
+        gathered += !mine.is_empty() as usize;
     }
     assert!(gathered > m.el.len() / 2, "only {gathered} elements have contacts");
 }

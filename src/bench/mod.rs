@@ -298,15 +298,14 @@ pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repe
 
 /// Memory a model's stepping arrays take: (bytes per element, bytes per contact). Per element:
 /// the constants of `Elements`, the state (positions, velocities, forces, neighbour reference
-/// and margin), the adjacency's row start and stage 1's one-thread force sums; per contact: the
-/// contact with its history, the optional parts' slot (when on), the force (used by the
-/// pooled gather) and the two adjacency entries. The broad phase's grid is transient and not
-/// counted.
+/// and margin) and stage 1's force sums; per contact: the contact with its history, the
+/// optional parts' slot (when on) and the force (stored when asked for). The broad phase's
+/// grid is transient and not counted.
 pub fn footprint(model: &Model) -> (f64, f64) {
     use std::mem::size_of;
     use crate::kernel::contacts::{Contact, ContactForce};
     use crate::kernel::law::Extra;
-    let (n, c) = (model.el.len().max(1), model.state.contacts.len().max(1));
+    let n = model.el.len().max(1);
     let el = &model.el;
     let constants = el.radius.len() * 5 * size_of::<f64>()
         + el.prescribed.len()
@@ -317,12 +316,11 @@ pub fn footprint(model: &Model) -> (f64, f64) {
     let state = (st.pos.len() + st.vel.len() + st.force.len()) * size_of::<[f64; 3]>()
         + st.rebuild_pos.len() * size_of::<[f64; 2]>()
         + st.margin_m.len() * size_of::<f64>();
-    // The adjacency's row start and stage 1's one-thread force sum.
-    let per_element = (constants + state) as f64 / n as f64 + (size_of::<u32>() + size_of::<[f64; 3]>()) as f64;
+    // Stage 1's force sum.
+    let per_element = (constants + state) as f64 / n as f64 + size_of::<[f64; 3]>() as f64;
     let cs = &st.contacts;
     let per_contact = size_of::<Contact>() as f64
         + if cs.extra.is_empty() { 0.0 } else { size_of::<Extra>() as f64 }
-        + size_of::<ContactForce>() as f64
-        + cs.adj.len() as f64 * size_of::<u32>() as f64 / c as f64;
+        + size_of::<ContactForce>() as f64;
     (per_element, per_contact)
 }

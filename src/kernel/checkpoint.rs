@@ -106,7 +106,7 @@ impl Model {
             return Err(bad(format!("{} bytes after the end of the state", rest.len())));
         }
         self.check(&state)?;
-        state.contacts.rebuild_index(self.el.len());
+        state.contacts.replan(self.el.len());
         self.state = state;
         Ok(())
     }

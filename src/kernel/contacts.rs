@@ -1,8 +1,7 @@
 //! Contact arrays: one entry per pair that is bonded or may touch before the next neighbour
 //! rebuild, sorted by (i, j); the optional parts' state beside it; the per-contact force
-//! output; the fixed per-element adjacency through which stored forces are gathered in a fixed
-//! order; and the plan by which the contact stage on the pool scatters them in that order
-//! (`pieces`).
+//! output; and the plan by which the contact stage on the pool scatters the forces in contact
+//! order (`pieces`).
 
 use serde::{Deserialize, Serialize};
 
@@ -69,7 +68,7 @@ pub struct ContactForce {
     pub tj: f64,
 }
 
-/// The contact list with its optional state, its forces and the per-element adjacency.
+/// The contact list with its optional state, its forces and the plan of the pool's scatter.
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Contacts {
     /// Contacts sorted by (i, j).
@@ -79,13 +78,6 @@ pub struct Contacts {
     /// Forces of the last step, parallel to `list`: written only with
     /// `Model::record_contact_forces` (else they are stale).
     pub force: Vec<ContactForce>,
-    /// CSR row starts: element e's entries are `adj[start[e]..start[e+1]]` (derived from `list`).
-    #[serde(skip)]
-    pub start: Vec<u32>,
-    /// Entries `(contact << 1) | side`, side 0 when e is the contact's i, 1 when j; each
-    /// element's entries are in increasing contact order (derived from `list`).
-    #[serde(skip)]
-    pub adj: Vec<u32>,
     /// Per piece of the list cut at `piece_cuts`, the elements it scatters into directly: the
     /// plan of the contact stage's scatter on the pool (`pieces::plan`; derived from `list`,
     /// made by [`Contacts::plan_pieces`] and kept up with the list from then on).
@@ -107,13 +99,11 @@ pub struct Contacts {
     merged: Vec<Contact>,
     #[serde(skip)]
     merged_extra: Vec<Extra>,
-    #[serde(skip)]
-    fill: Vec<u32>,
 }
 
 impl Contacts {
-    /// A contact set from a list and its extra slots (empty or parallel); the adjacency is built
-    /// by `rebuild_adjacency` or a merge.
+    /// A contact set from a list and its extra slots (empty or parallel); the forces are sized
+    /// by [`Contacts::refresh`] or a merge.
     pub fn from_list(list: Vec<Contact>, extra: Vec<Extra>) -> Self {
         debug_assert!(extra.is_empty() || extra.len() == list.len());
         Contacts { list, extra, ..Default::default() }
@@ -129,43 +119,24 @@ impl Contacts {
         self.list.is_empty()
     }
 
-    /// Rebuild the per-element adjacency from `list` (counting sort: O(elements + contacts)).
-    /// The forces are zeroed.
-    pub fn rebuild_adjacency(&mut self, n_elements: usize) {
+    /// After the list changed: the forces zeroed, and the plan of the scatter, if one is kept,
+    /// made again.
+    pub fn refresh(&mut self, n_elements: usize) {
         self.force.clear();
         self.force.resize(self.list.len(), ContactForce::default());
-        self.rebuild_index(n_elements);
+        self.replan(n_elements);
     }
 
-    /// Rebuild the adjacency only (the forces are kept: a restored checkpoint).
-    pub fn rebuild_index(&mut self, n_elements: usize) {
-        self.start.clear();
-        self.start.resize(n_elements + 1, 0);
-        for c in &self.list {
-            self.start[c.i as usize + 1] += 1;
-            self.start[c.j as usize + 1] += 1;
-        }
-        for e in 0..n_elements {
-            self.start[e + 1] += self.start[e];
-        }
-        self.adj.clear();
-        self.adj.resize(self.start[n_elements] as usize, 0);
-        self.fill.clear();
-        self.fill.extend_from_slice(&self.start[..n_elements]);
-        for (k, c) in self.list.iter().enumerate() {
-            let k = k as u32;
-            self.adj[self.fill[c.i as usize] as usize] = k << 1;
-            self.fill[c.i as usize] += 1;
-            self.adj[self.fill[c.j as usize] as usize] = (k << 1) | 1;
-            self.fill[c.j as usize] += 1;
-        }
+    /// The plan of the scatter made again, if one is kept (the forces are kept: a restored
+    /// checkpoint).
+    pub fn replan(&mut self, n_elements: usize) {
         if self.piece_rule.is_some() {
             self.plan(n_elements);
         }
     }
 
     /// Plan the scatter on `threads` threads in pieces of `most` contacts at most (kept up with
-    /// the list from now on, by every adjacency rebuild).
+    /// the list from now on, by every [`Contacts::refresh`]).
     pub fn plan_pieces(&mut self, threads: usize, most: usize, n_elements: usize) {
         self.piece_rule = Some((threads, most));
         self.plan(n_elements);
@@ -203,57 +174,54 @@ impl Contacts {
         self.merged.clear();
         self.merged_extra.clear();
         let with_extra = !self.extra.is_empty();
-        let (mut a, mut b) = (0usize, 0usize);
         let old = &self.list;
-        while a < old.len() || b < pairs.len() {
-            let ka = old.get(a).map_or(u64::MAX, Contact::key);
+        let kept = |c: &Contact| c.bond == Bond::Intact || !covered(c.i, c.j) || touching(c);
+        let mut a = 0usize;
+        for b in 0..=pairs.len() {
             let kb = pairs.get(b).map_or(u64::MAX, |&(i, j)| ((i as u64) << 32) | j as u64);
-            if ka <= kb {
-                let c = old[a];
-                if c.bond == Bond::Intact || ka == kb || !covered(c.i, c.j) || touching(&c) {
-                    self.merged.push(c);
-                    if with_extra {
-                        self.merged_extra.push(self.extra[a]);
+            // The old contacts before the candidate: kept as they are, in runs copied whole, or
+            // dropped.
+            loop {
+                let run = a + old[a..].iter().position(|c| c.key() >= kb || !kept(c)).unwrap_or(old.len() - a);
+                self.merged.extend_from_slice(&old[a..run]);
+                if with_extra {
+                    self.merged_extra.extend_from_slice(&self.extra[a..run]);
+                }
+                a = run;
+                match old.get(a) {
+                    Some(c) if c.key() < kb => {
+                        if c.ut_m != 0.0 {
+                            released.friction_j += release_j(c);
+                        }
+                        a += 1;
                     }
-                } else if c.ut_m != 0.0 {
-                    released.friction_j += release_j(&c);
+                    _ => break,
+                }
+            }
+            let Some(&(i, j)) = pairs.get(b) else { break };
+            if old.get(a).is_some_and(|c| c.key() == kb) {
+                // A candidate already in the list: kept with its history.
+                self.merged.push(old[a]);
+                if with_extra {
+                    self.merged_extra.push(self.extra[a]);
                 }
                 a += 1;
-                if ka == kb {
-                    b += 1;
+            } else if admit(i, j) {
+                self.merged.push(fresh(i, j));
+                if with_extra {
+                    self.merged_extra.push(fresh_extra(i, j));
                 }
-            } else {
-                let (i, j) = pairs[b];
-                if admit(i, j) {
-                    self.merged.push(fresh(i, j));
-                    if with_extra {
-                        self.merged_extra.push(fresh_extra(i, j));
-                    }
-                }
-                b += 1;
             }
         }
         std::mem::swap(&mut self.list, &mut self.merged);
         std::mem::swap(&mut self.extra, &mut self.merged_extra);
-        self.rebuild_adjacency(n_elements);
+        self.refresh(n_elements);
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn adjacency_lists_each_contact_twice_in_order() {
-        let mut c = Contacts::from_list(
-            vec![Contact::bonded(0, 1, 0, 1.0), Contact::bonded(0, 2, 0, 1.0), Contact::bonded(1, 2, 0, 1.0)],
-            vec![],
-        );
-        c.rebuild_adjacency(3);
-        assert_eq!(c.start, vec![0, 2, 4, 6]);
-        // Entries are (contact << 1) | side.
-        assert_eq!(c.adj, vec![0, 2, 1, 4, 3, 5]);
-    }
 
     #[test]
     fn merge_keeps_bonds_and_candidates_with_history_and_books_what_is_dropped() {
@@ -280,5 +248,91 @@ mod tests {
         assert_eq!(c.list[1].ut_m, 0.5);
         assert_eq!(c.force.len(), 3);
         assert_eq!(released.friction_j, 0.5);
+    }
+
+    /// The merge as first written, one contact at a time: the reference for the merge in runs.
+    #[allow(clippy::too_many_arguments)]
+    fn merged_one_by_one(
+        old: &[Contact],
+        extra: &[Extra],
+        pairs: &[(u32, u32)],
+        covered: impl Fn(u32, u32) -> bool,
+        touching: impl Fn(&Contact) -> bool,
+        fresh: impl Fn(u32, u32) -> Contact,
+        released: &mut Dissipation,
+    ) -> (Vec<Contact>, Vec<Extra>) {
+        let (mut list, mut xs) = (vec![], vec![]);
+        let with_extra = !extra.is_empty();
+        let (mut a, mut b) = (0usize, 0usize);
+        while a < old.len() || b < pairs.len() {
+            let ka = old.get(a).map_or(u64::MAX, Contact::key);
+            let kb = pairs.get(b).map_or(u64::MAX, |&(i, j)| ((i as u64) << 32) | j as u64);
+            if ka <= kb {
+                let c = old[a];
+                if c.bond == Bond::Intact || ka == kb || !covered(c.i, c.j) || touching(&c) {
+                    list.push(c);
+                    if with_extra {
+                        xs.push(extra[a]);
+                    }
+                } else if c.ut_m != 0.0 {
+                    released.friction_j += c.ut_m;
+                }
+                a += 1;
+                b += (ka == kb) as usize;
+            } else {
+                let (i, j) = pairs[b];
+                if (i + j) % 5 != 0 {
+                    list.push(fresh(i, j));
+                    if with_extra {
+                        xs.push(Extra::new(i as f64));
+                    }
+                }
+                b += 1;
+            }
+        }
+        (list, xs)
+    }
+
+    #[test]
+    fn merge_in_runs_is_the_merge_one_contact_at_a_time() {
+        let mut s = 99u64;
+        let mut rnd = |m: u64| {
+            s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (s >> 33) % m
+        };
+        for round in 0..200 {
+            let n = 2 + rnd(40) as u32;
+            // Old contacts and candidates: random sets of pairs, sorted, some in both.
+            let mut keys: Vec<(u32, u32)> = (0..rnd(120)).map(|_| (rnd(n as u64) as u32, rnd(n as u64) as u32)).filter(|(i, j)| i < j).collect();
+            keys.sort_unstable();
+            keys.dedup();
+            let old: Vec<Contact> = keys
+                .iter()
+                .map(|&(i, j)| {
+                    let mut c = if rnd(3) == 0 { Contact::bonded(i, j, 0, 1.0) } else { Contact::frictional(i, j, 0, 1.0) };
+                    c.ut_m = if rnd(2) == 0 { 0.0 } else { 0.1 * (i + j) as f64 };
+                    c
+                })
+                .collect();
+            let extra: Vec<Extra> = keys.iter().map(|&(i, j)| Extra::new((i * 100 + j) as f64)).collect();
+            let mut pairs: Vec<(u32, u32)> = (0..rnd(60)).map(|_| (rnd(n as u64) as u32, rnd(n as u64) as u32)).filter(|(i, j)| i < j).collect();
+            pairs.extend(keys.iter().filter(|_| rnd(4) == 0));
+            pairs.sort_unstable();
+            pairs.dedup();
+            let movers: Vec<bool> = (0..n).map(|_| rnd(3) == 0).collect();
+            let full = round % 3 == 0;
+            let covered = |i: u32, j: u32| full || movers[i as usize] || movers[j as usize];
+            let touching = |c: &Contact| (c.i * 7 + c.j).is_multiple_of(3);
+            let fresh = |i: u32, j: u32| Contact::frictional(i, j, 1, 2.0);
+            let mut want = Dissipation::default();
+            let (list, xs) = merged_one_by_one(&old, &extra, &pairs, covered, touching, fresh, &mut want);
+            let mut c = Contacts::from_list(old.clone(), extra.clone());
+            let mut got = Dissipation::default();
+            c.merge_candidates(&pairs, covered, touching, fresh, |i, _| Extra::new(i as f64), |i, j| (i + j) % 5 != 0, |k| k.ut_m, &mut got, n as usize);
+            assert_eq!(c.list, list, "round {round}");
+            assert_eq!(c.extra, xs, "round {round}");
+            assert_eq!(got.friction_j.to_bits(), want.friction_j.to_bits(), "round {round}");
+            assert_eq!(c.force.len(), list.len());
+        }
     }
 }

@@ -11,10 +11,15 @@
 //! rebuild every step): the cells are sized for the usual reach r + m, and the few elements that
 //! reach further search the rings of cells their reach needs.
 
+use rayon::prelude::*;
+
 /// Reusable buffers for the broad phase (no allocation once warmed up).
 #[derive(Debug, Default, Clone)]
 pub struct BroadPhase {
     keyed: Vec<(u64, u32)>,
+    /// Scratch: the movers' new keys, and `keyed` merged with them.
+    moved: Vec<(u64, u32)>,
+    merged: Vec<(u64, u32)>,
     pairs: Vec<u64>,
     wide: Vec<u32>,
     count: Vec<u32>,
@@ -23,12 +28,31 @@ pub struct BroadPhase {
     inv_cell: f64,
 }
 
+/// Elements per block of the full search on the pool.
+const BLOCK: usize = 4096;
+
+/// Movers per block of a local search on the pool.
+const MOVERS_BLOCK: usize = 256;
+
 /// Cell coordinates are clamped to this range, so that a neighbour (±k) never aliases a cell.
 const CELL_LIMIT: i64 = i32::MAX as i64 - 1024;
 
 fn cell_key(cx: i64, cy: i64) -> u64 {
     let offset = |c: i64| (c - i32::MIN as i64) as u64;
     (offset(cy) << 32) | offset(cx)
+}
+
+/// Pushes the pair of a (centre `ca`) and b, smaller index first, packed as (i << 32) | j,
+/// when their centres are closer than r_a + r_b + m_a + m_b.
+#[inline(always)]
+fn reach_test(a: usize, b: usize, ca: [f64; 2], centre: &impl Fn(usize) -> [f64; 2], r: &[f64], margin: &impl Fn(usize) -> f64, pairs: &mut Vec<u64>) {
+    let cb = centre(b);
+    let (dx, dy) = (cb[0] - ca[0], cb[1] - ca[1]);
+    let reach = (r[a] + r[b]) + (margin(a) + margin(b));
+    if dx * dx + dy * dy < reach * reach {
+        let (i, j) = if a < b { (a, b) } else { (b, a) };
+        pairs.push(((i as u64) << 32) | j as u64);
+    }
 }
 
 fn cell_coords(key: u64) -> (i64, i64) {
@@ -39,13 +63,16 @@ impl BroadPhase {
     /// All pairs (i < j) with |c_i − c_j| < r_i + r_j + m_i + m_j, sorted by (i, j), written to
     /// `out` (cleared first); `centre(e)` gives element e's centre [x m, y m] for e < r.len(),
     /// `margin(e)` its margin, m. Cells are sized for the reach r + m of most elements
-    /// (`usual_reach_m`; None: the largest radius plus the smallest margin).
+    /// (`usual_reach_m`; None: the largest radius plus the smallest margin). With `pool`, the
+    /// search runs in blocks on rayon's pool; the result is the same.
+    #[allow(clippy::too_many_arguments)]
     pub fn pairs(
         &mut self,
-        centre: impl Fn(usize) -> [f64; 2],
+        centre: impl Fn(usize) -> [f64; 2] + Sync,
         r: &[f64],
-        margin: impl Fn(usize) -> f64,
+        margin: impl Fn(usize) -> f64 + Sync,
         usual_reach_m: Option<f64>,
+        pool: bool,
         out: &mut Vec<(u32, u32)>,
     ) {
         out.clear();
@@ -84,43 +111,55 @@ impl BroadPhase {
         let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
         let upper = |k: u64| keys.partition_point(|&(kk, _)| kk <= k);
         let is_wide = |e: usize| r[e] + margin(e) > usual;
-        let test = |a: usize, b: usize, ca: [f64; 2], pairs: &mut Vec<u64>| {
-            let cb = centre(b);
-            let (dx, dy) = (cb[0] - ca[0], cb[1] - ca[1]);
-            let reach = (r[a] + r[b]) + (margin(a) + margin(b));
-            if dx * dx + dy * dy < reach * reach {
-                let (i, j) = if a < b { (a, b) } else { (b, a) };
-                pairs.push(((i as u64) << 32) | j as u64);
-            }
-        };
+        let test = |a: usize, b: usize, ca: [f64; 2], pairs: &mut Vec<u64>| reach_test(a, b, ca, &centre, r, &margin, pairs);
         // Usual–usual pairs: forward half-stencil (rest of own cell and (cx+1, cy), then the
         // three cells above); two usual reaches never exceed one cell. The elements come in
-        // key order, so the stencil's bounds only move forward: three pointers, no search.
-        let (mut same_end, mut above_start, mut above_end) = (0usize, 0usize, 0usize);
-        for s in 0..n {
-            let (key, a) = keys[s];
-            let a = a as usize;
-            let (cx, cy) = cell_coords(key);
-            let (k_same, k_lo, k_hi) = (cell_key(cx + 1, cy), cell_key(cx - 1, cy + 1), cell_key(cx + 1, cy + 1));
-            while same_end < n && keys[same_end].0 <= k_same {
-                same_end += 1;
+        // key order, so the stencil's bounds only move forward: three pointers, no search
+        // (a block's first element finds them by binary search).
+        let usual_block = |from: usize, to: usize, pairs: &mut Vec<u64>| {
+            let (mut same_end, mut above_start, mut above_end) = (from, 0usize, 0usize);
+            if from < n {
+                let (cx, cy) = cell_coords(keys[from].0);
+                above_start = lower(cell_key(cx - 1, cy + 1));
             }
-            while above_start < n && keys[above_start].0 < k_lo {
-                above_start += 1;
-            }
-            above_end = above_end.max(above_start);
-            while above_end < n && keys[above_end].0 <= k_hi {
-                above_end += 1;
-            }
-            if is_wide(a) {
-                continue;
-            }
-            let ca = centre(a);
-            for &(_, b) in keys[s + 1..same_end].iter().chain(&keys[above_start..above_end]) {
-                if !is_wide(b as usize) {
-                    test(a, b as usize, ca, &mut self.pairs);
+            for s in from..to {
+                let (key, a) = keys[s];
+                let a = a as usize;
+                let (cx, cy) = cell_coords(key);
+                let (k_same, k_lo, k_hi) = (cell_key(cx + 1, cy), cell_key(cx - 1, cy + 1), cell_key(cx + 1, cy + 1));
+                while same_end < n && keys[same_end].0 <= k_same {
+                    same_end += 1;
+                }
+                while above_start < n && keys[above_start].0 < k_lo {
+                    above_start += 1;
+                }
+                above_end = above_end.max(above_start);
+                while above_end < n && keys[above_end].0 <= k_hi {
+                    above_end += 1;
+                }
+                if is_wide(a) {
+                    continue;
+                }
+                let ca = centre(a);
+                for &(_, b) in keys[s + 1..same_end].iter().chain(&keys[above_start..above_end]) {
+                    if !is_wide(b as usize) {
+                        test(a, b as usize, ca, pairs);
+                    }
                 }
             }
+        };
+        if pool {
+            let found: Vec<Vec<u64>> = (0..n.div_ceil(BLOCK))
+                .into_par_iter()
+                .map(|b| {
+                    let mut v = Vec::new();
+                    usual_block(b * BLOCK, ((b + 1) * BLOCK).min(n), &mut v);
+                    v
+                })
+                .collect();
+            found.iter().for_each(|v| self.pairs.extend_from_slice(v));
+        } else {
+            usual_block(0, n, &mut self.pairs);
         }
         // Wide elements: every cell within their reach plus the widest one; a pair of two wide
         // elements is taken once, from the smaller index.
@@ -164,59 +203,79 @@ impl BroadPhase {
     /// After a full [`BroadPhase::pairs`]: the elements `movers` (flagged in `is_mover`) have
     /// new centres (and margins); re-key them, and write to `out` every pair (i < j, sorted)
     /// that involves a mover and satisfies the same reach test, where `widest_m` bounds r + m
-    /// of every element. Pairs between two other elements are not looked at.
+    /// of every element. Pairs between two other elements are not looked at. With `pool`, the
+    /// movers are searched in blocks on rayon's pool; the result is the same.
     #[allow(clippy::too_many_arguments)]
     pub fn requery(
         &mut self,
         movers: &[u32],
         is_mover: &[bool],
-        centre: impl Fn(usize) -> [f64; 2],
+        centre: impl Fn(usize) -> [f64; 2] + Sync,
         r: &[f64],
-        margin: impl Fn(usize) -> f64,
+        margin: impl Fn(usize) -> f64 + Sync,
         widest_m: f64,
+        pool: bool,
         out: &mut Vec<(u32, u32)>,
     ) {
         out.clear();
         let inv = self.inv_cell;
         let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
         let cell_of = |c: [f64; 2]| (clamp(c[0]), clamp(c[1]));
-        for k in self.keyed.iter_mut() {
-            if is_mover[k.1 as usize] {
-                let (cx, cy) = cell_of(centre(k.1 as usize));
-                k.0 = cell_key(cx, cy);
+        // The others keep their keys and their order: the movers' new keys, sorted apart, are
+        // merged in (the (key, element) pairs are distinct, so the order is the full sort's).
+        self.moved.clear();
+        self.moved.extend(movers.iter().map(|&e| {
+            let (cx, cy) = cell_of(centre(e as usize));
+            (cell_key(cx, cy), e)
+        }));
+        self.moved.sort_unstable();
+        self.merged.clear();
+        let mut moved = self.moved.iter().peekable();
+        for &k in self.keyed.iter().filter(|k| !is_mover[k.1 as usize]) {
+            while let Some(&m) = moved.next_if(|&&m| m < k) {
+                self.merged.push(m);
             }
+            self.merged.push(k);
         }
-        self.keyed.sort();
+        self.merged.extend(moved);
+        std::mem::swap(&mut self.keyed, &mut self.merged);
         let keys = &self.keyed;
         let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
         let upper = |k: u64| keys.partition_point(|&(kk, _)| kk <= k);
-        self.pairs.clear();
-        for &a in movers {
-            let a = a as usize;
-            let ca = centre(a);
-            let (cx, cy) = cell_of(ca);
-            let k = ((r[a] + margin(a) + widest_m) * inv).ceil() as i64;
-            for y in cy - k..=cy + k {
-                for &(_, b) in &keys[lower(cell_key(cx - k, y))..upper(cell_key(cx + k, y))] {
-                    let b = b as usize;
-                    if b == a {
-                        continue;
-                    }
-                    let cb = centre(b);
-                    let (dx, dy) = (cb[0] - ca[0], cb[1] - ca[1]);
-                    let reach = (r[a] + r[b]) + (margin(a) + margin(b));
-                    if dx * dx + dy * dy < reach * reach {
-                        let (i, j) = if a < b { (a, b) } else { (b, a) };
-                        self.pairs.push(((i as u64) << 32) | j as u64);
+        let search = |movers: &[u32], pairs: &mut Vec<u64>| {
+            for &a in movers {
+                let a = a as usize;
+                let ca = centre(a);
+                let (cx, cy) = cell_of(ca);
+                let k = ((r[a] + margin(a) + widest_m) * inv).ceil() as i64;
+                for y in cy - k..=cy + k {
+                    for &(_, b) in &keys[lower(cell_key(cx - k, y))..upper(cell_key(cx + k, y))] {
+                        let b = b as usize;
+                        if b != a {
+                            reach_test(a, b, ca, &centre, r, &margin, pairs);
+                        }
                     }
                 }
             }
+        };
+        self.pairs.clear();
+        if pool {
+            let found: Vec<Vec<u64>> = movers
+                .par_chunks(MOVERS_BLOCK)
+                .map(|block| {
+                    let mut v = Vec::new();
+                    search(block, &mut v);
+                    v
+                })
+                .collect();
+            found.iter().for_each(|v| self.pairs.extend_from_slice(v));
+        } else {
+            search(movers, &mut self.pairs);
         }
         self.pairs.sort_unstable();
         self.pairs.dedup();
         out.extend(self.pairs.iter().map(|&p| ((p >> 32) as u32, p as u32)));
     }
-
 }
 
 #[cfg(test)]
@@ -236,13 +295,18 @@ mod tests {
         v
     }
 
-    #[test]
-    fn matches_brute_force_including_far_away_elements_and_after_a_local_update() {
-        let mut s = 12345u64;
-        let mut rnd = || {
+    /// Uniform numbers in [0, 1) from `seed` (a linear congruential generator).
+    fn uniform(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
             s = s.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
             (s >> 11) as f64 / (1u64 << 53) as f64
-        };
+        }
+    }
+
+    #[test]
+    fn matches_brute_force_including_far_away_elements_and_after_a_local_update() {
+        let mut rnd = uniform(12345);
         let n = 400;
         let mut x: Vec<f64> = (0..n).map(|_| rnd() * 0.5 - 0.25).collect();
         let mut y: Vec<f64> = (0..n).map(|_| rnd() * 0.5).collect();
@@ -255,14 +319,14 @@ mod tests {
         x[11] = -3e12;
         let mut bp = BroadPhase::default();
         let mut out = vec![];
-        bp.pairs(|e| [x[e], y[e]], &r, |_| 0.001, None, &mut out);
+        bp.pairs(|e| [x[e], y[e]], &r, |_| 0.001, None, false, &mut out);
         assert_eq!(out, brute(&x, &y, &r, |_| 0.001));
         assert!(out.contains(&(3, 7)));
         // Per-element margins, some elements reaching several cells further than the rest.
         let m = |e: usize| if e.is_multiple_of(17) { 0.03 + 0.001 * (e % 5) as f64 } else { 0.0005 + 0.0001 * (e % 3) as f64 };
-        bp.pairs(|e| [x[e], y[e]], &r, m, None, &mut out);
+        bp.pairs(|e| [x[e], y[e]], &r, m, None, false, &mut out);
         assert_eq!(out, brute(&x, &y, &r, m));
-        bp.pairs(|e| [x[e], y[e]], &r, m, Some(0.012), &mut out);
+        bp.pairs(|e| [x[e], y[e]], &r, m, Some(0.012), false, &mut out);
         assert_eq!(out, brute(&x, &y, &r, m));
         // Move some elements (far, and a little) and requery them alone: with the pairs of the
         // others from before, the union is the full search at the new positions.
@@ -276,9 +340,46 @@ mod tests {
         x[3] = 5.0;
         let widest = (0..n).map(|e| r[e] + m(e)).fold(0.0, f64::max);
         let mut moved = vec![];
-        bp.requery(&movers, &is_mover, |e| [x[e], y[e]], &r, m, widest, &mut moved);
+        bp.requery(&movers, &is_mover, |e| [x[e], y[e]], &r, m, widest, false, &mut moved);
         let mut union: Vec<(u32, u32)> = out.iter().copied().filter(|&(i, j)| !is_mover[i as usize] && !is_mover[j as usize]).chain(moved).collect();
         union.sort_unstable();
         assert_eq!(union, brute(&x, &y, &r, m));
+    }
+
+    #[test]
+    fn the_pool_finds_the_same_pairs_across_block_edges() {
+        // Several blocks of the full search and of the movers' search, on two threads.
+        let mut rnd = uniform(777);
+        let n = 3 * BLOCK + 123;
+        let (mut x, mut y): (Vec<f64>, Vec<f64>) = (0..n).map(|_| (rnd() * 1.2, rnd() * 1.2)).unzip();
+        let r: Vec<f64> = (0..n).map(|_| 0.004 + 0.004 * rnd()).collect();
+        let m = |e: usize| if e.is_multiple_of(29) { 0.02 } else { 0.001 };
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().unwrap();
+        let (mut serial, mut on_pool) = (BroadPhase::default(), BroadPhase::default());
+        let (mut a, mut b) = (vec![], vec![]);
+        serial.pairs(|e| [x[e], y[e]], &r, m, None, false, &mut a);
+        pool.install(|| on_pool.pairs(|e| [x[e], y[e]], &r, m, None, true, &mut b));
+        assert_eq!(a, b);
+        assert_eq!(a, brute(&x, &y, &r, m));
+        let movers: Vec<u32> = (0..n as u32).filter(|e| e % 5 == 1).collect();
+        assert!(movers.len() > 3 * MOVERS_BLOCK);
+        let mut is_mover = vec![false; n];
+        movers.iter().for_each(|&e| is_mover[e as usize] = true);
+        for &e in &movers {
+            x[e as usize] += 0.01 * rnd() - 0.005;
+            y[e as usize] += 0.01 * rnd() - 0.005;
+        }
+        let widest = (0..n).map(|e| r[e] + m(e)).fold(0.0, f64::max);
+        serial.requery(&movers, &is_mover, |e| [x[e], y[e]], &r, m, widest, false, &mut a);
+        pool.install(|| on_pool.requery(&movers, &is_mover, |e| [x[e], y[e]], &r, m, widest, true, &mut b));
+        assert_eq!(a, b);
+        assert_eq!(serial.keyed, on_pool.keyed);
+        // The movers' keys merged in are the full sort of every element's key.
+        let mut resorted = serial.keyed.clone();
+        resorted.sort();
+        assert_eq!(serial.keyed, resorted);
+        let brute_all = brute(&x, &y, &r, m);
+        let moved: Vec<_> = brute_all.iter().copied().filter(|&(i, j)| is_mover[i as usize] || is_mover[j as usize]).collect();
+        assert_eq!(a, moved);
     }
 }

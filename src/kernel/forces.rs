@@ -6,8 +6,7 @@
 //! In a step the stage also adds each force to its two elements as it goes (a scatter), which
 //! spares the motion stage a gather. On one thread the scatter visits an element's contacts in
 //! increasing contact order from zero; on the pool the list is cut into pieces that keep that
-//! order (`pieces`): the sums are bitwise the same for any thread count, and the same as a
-//! gather over the adjacency (which `integrate::forces_now` does with stored forces).
+//! order (`pieces`): the sums are bitwise the same for any thread count.
 //!
 //! The loop is compiled once per set of optional law parts (`law::PartSet`). Where the part
 //! set allows it and the processor has AVX, the contacts go four at a time, with the same bits:

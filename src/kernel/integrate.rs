@@ -130,30 +130,18 @@ fn total_force<const EXTERNAL: bool>(summed: [f64; 3], mass_kg: f64, load: u16, 
     ([fx + ex, fy + ey, tz], [ex, ey])
 }
 
-/// The contact forces on element `e` [Fx N, Fy N, T N·m], summed over its adjacency in its
-/// fixed order from zero.
-#[inline(always)]
-fn gather(e: usize, contacts: &Contacts) -> [f64; 3] {
-    let (mut fx, mut fy, mut tz) = (0.0, 0.0, 0.0);
-    let (s, t) = (contacts.start[e] as usize, contacts.start[e + 1] as usize);
-    for &a in &contacts.adj[s..t] {
-        let cf = &contacts.force[(a >> 1) as usize];
-        if a & 1 == 0 {
-            fx += cf.fx;
-            fy += cf.fy;
-            tz += cf.ti;
-        } else {
-            fx -= cf.fx;
-            fy -= cf.fy;
-            tz += cf.tj;
-        }
-    }
-    [fx, fy, tz]
-}
-
-/// Forces of every element for the current contact forces (no motion), as `advance` would see them.
+/// Forces of every element for the current contact forces (no motion), as `advance` would see
+/// them: the stored forces added to their elements in contact order from zero, as the contact
+/// stage's scatter adds them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    (0..el.len()).map(|e| total_force::<true>(gather(e, contacts), el.mass[e], el.load[e], drive, gravity).0).collect()
+    use super::forces::Sums;
+    let mut sums = vec![[0.0; 3]; el.len()];
+    let mut out = super::forces::Serial::new(&mut sums);
+    for (c, f) in contacts.list.iter().zip(&contacts.force) {
+        out.add(c, f);
+    }
+    out.finish();
+    sums.iter().enumerate().map(|(e, &s)| total_force::<true>(s, el.mass[e], el.load[e], drive, gravity).0).collect()
 }
 
 /// What the motion stage of a model has to do, resolved once per step from its parameters

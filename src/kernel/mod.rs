@@ -413,6 +413,7 @@ impl Model {
     /// The local update: new margins and reference positions for the movers, their pairs looked
     /// for again, everything else kept.
     fn update_neighbours(&mut self) {
+        let pool = self.parallel();
         let (st, s) = (&mut self.state, &mut self.scratch);
         s.is_mover.clear();
         s.is_mover.resize(self.el.len(), false);
@@ -424,7 +425,7 @@ impl Model {
         }
         let (r, margin, refs) = (&self.el.radius, &st.margin_m, &st.rebuild_pos);
         let widest = r.iter().zip(margin).map(|(r, m)| r + m).fold(0.0, f64::max);
-        s.broad.requery(&s.movers, &s.is_mover, |e| refs[e], r, |e| margin[e], widest, &mut s.pairs);
+        s.broad.requery(&s.movers, &s.is_mover, |e| refs[e], r, |e| margin[e], widest, pool, &mut s.pairs);
         let is_mover = &s.is_mover;
         let covered = |i: u32, j: u32| is_mover[i as usize] || is_mover[j as usize];
         Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, &mut st.contacts, &mut st.ledger);
@@ -433,11 +434,12 @@ impl Model {
 
     /// Rebuild the candidate pairs from the current positions (margins, broad phase, merge).
     pub fn rebuild_neighbours(&mut self) {
+        let pool = self.parallel();
         let (st, s) = (&mut self.state, &mut self.scratch);
         self.neighbours.margins(&self.el, &st.vel, &st.force, self.motion.dt_s, &mut st.margin_m);
         let (pos, margin) = (&st.pos, &st.margin_m);
         let usual = self.neighbours.usual_reach_m(self.el.radius.iter().copied().fold(0.0, f64::max));
-        s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], Some(usual), &mut s.pairs);
+        s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], Some(usual), pool, &mut s.pairs);
         Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, &mut st.contacts, &mut st.ledger);
         st.rebuild_pos.clear();
         st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
