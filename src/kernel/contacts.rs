@@ -259,6 +259,9 @@ mod tests {
         covered: impl Fn(u32, u32) -> bool,
         touching: impl Fn(&Contact) -> bool,
         fresh: impl Fn(u32, u32) -> Contact,
+        fresh_extra: impl Fn(u32, u32) -> Extra,
+        admit: impl Fn(u32, u32) -> bool,
+        release_j: impl Fn(&Contact) -> f64,
         released: &mut Dissipation,
     ) -> (Vec<Contact>, Vec<Extra>) {
         let (mut list, mut xs) = (vec![], vec![]);
@@ -275,16 +278,16 @@ mod tests {
                         xs.push(extra[a]);
                     }
                 } else if c.ut_m != 0.0 {
-                    released.friction_j += c.ut_m;
+                    released.friction_j += release_j(&c);
                 }
                 a += 1;
                 b += (ka == kb) as usize;
             } else {
                 let (i, j) = pairs[b];
-                if (i + j) % 5 != 0 {
+                if admit(i, j) {
                     list.push(fresh(i, j));
                     if with_extra {
-                        xs.push(Extra::new(i as f64));
+                        xs.push(fresh_extra(i, j));
                     }
                 }
                 b += 1;
@@ -324,11 +327,14 @@ mod tests {
             let covered = |i: u32, j: u32| full || movers[i as usize] || movers[j as usize];
             let touching = |c: &Contact| (c.i * 7 + c.j).is_multiple_of(3);
             let fresh = |i: u32, j: u32| Contact::frictional(i, j, 1, 2.0);
+            let fresh_extra = |i: u32, _| Extra::new(i as f64);
+            let admit = |i: u32, j: u32| !(i + j).is_multiple_of(5);
+            let release = |k: &Contact| k.ut_m * 0.5;
             let mut want = Dissipation::default();
-            let (list, xs) = merged_one_by_one(&old, &extra, &pairs, covered, touching, fresh, &mut want);
+            let (list, xs) = merged_one_by_one(&old, &extra, &pairs, covered, touching, fresh, fresh_extra, admit, release, &mut want);
             let mut c = Contacts::from_list(old.clone(), extra.clone());
             let mut got = Dissipation::default();
-            c.merge_candidates(&pairs, covered, touching, fresh, |i, _| Extra::new(i as f64), |i, j| (i + j) % 5 != 0, |k| k.ut_m, &mut got, n as usize);
+            c.merge_candidates(&pairs, covered, touching, fresh, fresh_extra, admit, release, &mut got, n as usize);
             assert_eq!(c.list, list, "round {round}");
             assert_eq!(c.extra, xs, "round {round}");
             assert_eq!(got.friction_j.to_bits(), want.friction_j.to_bits(), "round {round}");

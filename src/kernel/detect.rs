@@ -55,6 +55,23 @@ fn reach_test(a: usize, b: usize, ca: [f64; 2], centre: &impl Fn(usize) -> [f64;
     }
 }
 
+/// `find(items, out)` over `0..n`: in one go, or with `pool` in blocks of `block` items on
+/// rayon's pool, their finds appended to `out` in block order (the same list either way).
+fn in_blocks(pool: bool, n: usize, block: usize, out: &mut Vec<u64>, find: impl Fn(std::ops::Range<usize>, &mut Vec<u64>) + Sync) {
+    if !pool {
+        return find(0..n, out);
+    }
+    let found: Vec<Vec<u64>> = (0..n.div_ceil(block))
+        .into_par_iter()
+        .map(|b| {
+            let mut v = Vec::new();
+            find(b * block..((b + 1) * block).min(n), &mut v);
+            v
+        })
+        .collect();
+    found.iter().for_each(|v| out.extend_from_slice(v));
+}
+
 fn cell_coords(key: u64) -> (i64, i64) {
     ((key & 0xffff_ffff) as i64 + i32::MIN as i64, (key >> 32) as i64 + i32::MIN as i64)
 }
@@ -148,19 +165,7 @@ impl BroadPhase {
                 }
             }
         };
-        if pool {
-            let found: Vec<Vec<u64>> = (0..n.div_ceil(BLOCK))
-                .into_par_iter()
-                .map(|b| {
-                    let mut v = Vec::new();
-                    usual_block(b * BLOCK, ((b + 1) * BLOCK).min(n), &mut v);
-                    v
-                })
-                .collect();
-            found.iter().for_each(|v| self.pairs.extend_from_slice(v));
-        } else {
-            usual_block(0, n, &mut self.pairs);
-        }
+        in_blocks(pool, n, BLOCK, &mut self.pairs, |b, pairs| usual_block(b.start, b.end, pairs));
         // Wide elements: every cell within their reach plus the widest one; a pair of two wide
         // elements is taken once, from the smaller index.
         let widest = self.wide.iter().map(|&e| r[e as usize] + margin(e as usize)).fold(usual, f64::max);
@@ -259,19 +264,7 @@ impl BroadPhase {
             }
         };
         self.pairs.clear();
-        if pool {
-            let found: Vec<Vec<u64>> = movers
-                .par_chunks(MOVERS_BLOCK)
-                .map(|block| {
-                    let mut v = Vec::new();
-                    search(block, &mut v);
-                    v
-                })
-                .collect();
-            found.iter().for_each(|v| self.pairs.extend_from_slice(v));
-        } else {
-            search(movers, &mut self.pairs);
-        }
+        in_blocks(pool, movers.len(), MOVERS_BLOCK, &mut self.pairs, |b, pairs| search(&movers[b], pairs));
         self.pairs.sort_unstable();
         self.pairs.dedup();
         out.extend(self.pairs.iter().map(|&p| ((p >> 32) as u32, p as u32)));
