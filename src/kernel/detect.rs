@@ -133,13 +133,13 @@ impl BroadPhase {
         // three cells above); two usual reaches never exceed one cell. The elements come in
         // key order, so the stencil's bounds only move forward: three pointers, no search
         // (a block's first element finds them by binary search).
-        let usual_block = |from: usize, to: usize, pairs: &mut Vec<u64>| {
-            let (mut same_end, mut above_start, mut above_end) = (from, 0usize, 0usize);
-            if from < n {
-                let (cx, cy) = cell_coords(keys[from].0);
+        let usual_block = |block: std::ops::Range<usize>, pairs: &mut Vec<u64>| {
+            let (mut same_end, mut above_start, mut above_end) = (block.start, 0usize, 0usize);
+            if block.start < n {
+                let (cx, cy) = cell_coords(keys[block.start].0);
                 above_start = lower(cell_key(cx - 1, cy + 1));
             }
-            for s in from..to {
+            for s in block {
                 let (key, a) = keys[s];
                 let a = a as usize;
                 let (cx, cy) = cell_coords(key);
@@ -165,7 +165,7 @@ impl BroadPhase {
                 }
             }
         };
-        in_blocks(pool, n, BLOCK, &mut self.pairs, |b, pairs| usual_block(b.start, b.end, pairs));
+        in_blocks(pool, n, BLOCK, &mut self.pairs, usual_block);
         // Wide elements: every cell within their reach plus the widest one; a pair of two wide
         // elements is taken once, from the smaller index.
         let widest = self.wide.iter().map(|&e| r[e as usize] + margin(e as usize)).fold(usual, f64::max);
