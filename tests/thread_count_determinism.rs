@@ -28,6 +28,22 @@ fn bitwise_identical_for_1_2_and_8_threads_with_breaking_bonds() {
 }
 
 #[test]
+fn batches_stepped_from_outside_the_pool_with_its_workers_looking_give_the_one_thread_bits() {
+    // `run_steps` from a thread outside any pool (a single large run: `demsweep run`) runs
+    // each batch on a worker of the global pool while the others look for work
+    // (`kernel::awake`); every other test here steps inside a pool.
+    let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
+    assert!(rayon::current_thread_index().is_none() && rayon::current_num_threads() > 1, "needs a global pool of two threads or more");
+    let mut m = common::impact::model();
+    for _ in 0..3 {
+        m.run_steps(500).unwrap();
+    }
+    let (one, broken, _) = fingerprint(1, 1500);
+    assert_eq!(m.state.ledger.bonds_broken(), broken);
+    assert!(common::impact::state_bits(&m) == one, "batches from outside the pool differ from one thread");
+}
+
+#[test]
 fn a_run_told_to_step_serially_gives_the_same_bits_inside_any_pool() {
     // Inside a sweep each run steps on its own thread (Threading::Serial) while the pool runs
     // other runs: the result must be the pool run's.

@@ -11,6 +11,7 @@
 //! constants, contact classes, the enabled law parts, boundary groups, the time step), the
 //! [`State`] that stepping changes (what a checkpoint holds), and scratch buffers.
 
+mod awake;
 pub mod boundary;
 pub mod build;
 pub mod checkpoint;
@@ -191,10 +192,12 @@ impl Model {
     /// Advance `n` steps. On the pool, from a thread outside it, the steps run on one of its
     /// workers: one entry into the pool for all of them, not two per step, and the same worker
     /// starts every parallel stage, so each stage's pieces tend to stay on the cores that had
-    /// them the step before.
+    /// them the step before; the other workers look for work meanwhile instead of sleeping
+    /// between the stages (`awake`). (Inside the pool — a sweep's run, or one that borrows a
+    /// lender's cores — the other workers have other work.)
     pub fn run_steps(&mut self, n: u64) -> Result<()> {
         if n > 1 && self.parallel() && rayon::current_thread_index().is_none() {
-            return rayon::scope(|_| self.steps_here(n));
+            return awake::while_running(|| self.steps_here(n));
         }
         self.steps_here(n)
     }
