@@ -32,6 +32,8 @@ fn batches_stepped_from_outside_the_pool_with_its_workers_looking_give_the_one_t
     // `run_steps` from a thread outside any pool (a single large run: `demsweep run`) runs
     // each batch on a worker of the global pool while the others look for work
     // (`kernel::awake`); every other test here steps inside a pool.
+    // Two threads, unless this process made its global pool already (then the assert below
+    // says whether it can serve).
     let _ = rayon::ThreadPoolBuilder::new().num_threads(2).build_global();
     assert!(rayon::current_thread_index().is_none() && rayon::current_num_threads() > 1, "needs a global pool of two threads or more");
     let mut m = common::impact::model();
