@@ -191,10 +191,11 @@ fn time_steps(model: &mut Model, steps: u64) -> Result<(f64, f64, u64, u64)> {
 }
 
 /// Run `repeats` timings of workload `w` on a pool of `threads` threads (`steps` steps for
-/// the block; the impact runs its own count).
+/// the block; the impact runs its own count), with the other workers looking for work between
+/// the stages as a single run's do (`kernel::awake`).
 pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: usize, threads: usize) -> Result<Figures> {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
-    pool.install(|| {
+    pool.install(|| crate::kernel::awake::while_running(|| {
         let mut runs = Vec::with_capacity(repeats);
         let (elements, steps) = match w {
             Workload::Block => {
@@ -231,7 +232,7 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
             rebuilds_per_1000: 1000.0 * rebuilds as f64 / steps as f64,
             local_updates_per_1000: 1000.0 * local as f64 / steps as f64,
         })
-    })
+    }))
 }
 
 /// One row of the optional-law benchmark.

@@ -16,7 +16,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 
 /// Runs `batch` on a worker of the current pool (the global one from outside any pool), with
 /// every other worker looking for work until it returns.
-pub fn while_running<R: Send>(batch: impl FnOnce() -> R + Send) -> R {
+pub(crate) fn while_running<R: Send>(batch: impl FnOnce() -> R + Send) -> R {
     let stop = AtomicBool::new(false);
     rayon::scope(|s| {
         // Set on the way out, also when `batch` panics: the lookers end, so the scope can.

@@ -11,7 +11,7 @@
 //! constants, contact classes, the enabled law parts, boundary groups, the time step), the
 //! [`State`] that stepping changes (what a checkpoint holds), and scratch buffers.
 
-mod awake;
+pub(crate) mod awake;
 pub mod boundary;
 pub mod build;
 pub mod checkpoint;
