@@ -325,3 +325,29 @@ pub fn footprint(model: &Model) -> (f64, f64) {
         + size_of::<ContactForce>() as f64;
     (per_element, per_contact)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The timing harness reports the work it ran, on one thread and on a pool of two with its
+    /// other worker looking for work: the block's elements and bonds as built, the steps asked
+    /// for, and figures consistent with one another. (Its timings themselves are not asserted:
+    /// speed is measured by the benchmarks, not by tests.)
+    #[test]
+    fn measure_reports_the_block_it_ran_on_one_thread_and_on_two() {
+        let (columns, rows, steps) = (24, 14, 40);
+        let built = workload(columns, rows).unwrap();
+        let (elements, contacts) = (built.el.len(), built.state.contacts.len());
+        for threads in [1, 2] {
+            let f = measure(Workload::Block, columns, rows, steps, 3, threads).unwrap();
+            assert_eq!((f.elements, f.steps, f.threads), (elements, steps, threads));
+            assert_eq!(f.contacts, contacts as f64, "{threads} threads: the intact block keeps its bonds and meets no one");
+            assert_eq!((f.rebuilds_per_1000, f.local_updates_per_1000), (0.0, 0.0), "{threads} threads: the block's elements never leave their margins");
+            assert!(f.step_s > 0.0 && f.step_s.is_finite(), "{threads} threads: step time {}", f.step_s);
+            assert!(f.range_ns.0 <= f.ns_per_contact_step && f.ns_per_contact_step <= f.range_ns.1, "{threads} threads: the median outside its range");
+            let rel = (f.element_steps_per_s * f.step_s / elements as f64 - 1.0).abs();
+            assert!(rel < 1e-12, "{threads} threads: element-steps per second off by {rel:e}");
+        }
+    }
+}
