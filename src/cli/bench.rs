@@ -20,10 +20,31 @@ pub struct Args {
     /// Thread counts to measure (default: 1 and all available).
     #[arg(long, value_delimiter = ',')]
     pub threads: Vec<usize>,
+    /// Block sizes, columns × rows of elements (e.g. `20x16,240x200`): the kernel's cost per
+    /// contact-step against the problem's size, from a block in the first level of cache to one
+    /// in the last. Each repeat takes `--steps` × 12 000 / (columns × rows) steps (at least
+    /// one), so every size does the default block's work.
+    #[arg(long, value_delimiter = ',', value_parser = parse_size, default_value = "120x100")]
+    pub size: Vec<(usize, usize)>,
     /// Instead: the block on one thread with no optional law, each one alone, all of them, and
     /// the simple kernel (linear springs, central differences, serial scatter), timed in turn.
     #[arg(long)]
     pub laws: bool,
+}
+
+/// "COLUMNSxROWS", each at least 2.
+fn parse_size(s: &str) -> std::result::Result<(usize, usize), String> {
+    let bad = || format!("expected COLUMNSxROWS with each ≥ 2 (e.g. 120x100), got {s:?}");
+    let (c, r) = s.split_once(['x', '×']).ok_or_else(bad)?;
+    match (c.trim().parse::<usize>(), r.trim().parse::<usize>()) {
+        (Ok(c), Ok(r)) if c >= 2 && r >= 2 => Ok((c, r)),
+        _ => Err(bad()),
+    }
+}
+
+/// Steps per repeat of a `columns` × `rows` block: `steps` of the default block's work.
+fn steps_for(steps: u64, (columns, rows): (usize, usize)) -> u64 {
+    ((steps as f64 * (COLUMNS * ROWS) as f64 / (columns * rows) as f64).round() as u64).max(1)
 }
 
 /// `--laws`: "model only what a scene needs" and the full law against the simple kernel.
@@ -82,6 +103,9 @@ pub fn run(args: Args) -> Result<()> {
         return Err(Error::input("--steps/--repeats", "must be ≥ 1"));
     }
     if args.laws {
+        if args.size != [(COLUMNS, ROWS)] {
+            return Err(Error::input("--size", format!("--laws measures the {COLUMNS} × {ROWS} block only")));
+        }
         return laws(&args);
     }
     let all = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
@@ -90,33 +114,61 @@ pub fn run(args: Args) -> Result<()> {
         Workload::Block => &[Workload::Block],
         Workload::Impact => &[Workload::Block, Workload::Impact],
     };
+    let sizes: Vec<String> = args.size.iter().map(|(c, r)| format!("{c} × {r}")).collect();
     println!(
-        "demsweep bench: close-packed block {COLUMNS} × {ROWS}{}; median of {} repeats",
+        "demsweep bench: close-packed block {}{}; median of {} repeats",
+        sizes.join(", "),
         if args.workload == Workload::Impact { ", and the seed's projectile at 1500 ft/s through 20 % of it" } else { ", all bonds intact, undamped" },
         args.repeats
     );
     println!("   work  threads  elements  contacts  ms/step   ns/contact-step  (min–max)      element-steps/s  rebuilds (local) /1000 steps");
-    let mut single: Vec<(Workload, f64)> = Vec::new();
-    for &t in &threads {
-        let mut block = None;
-        for &w in workloads {
-            let f = bench::measure(w, COLUMNS, ROWS, args.steps, args.repeats, t)?;
-            row(if w == Workload::Block { "block" } else { "impact" }, &f);
-            if let (Workload::Impact, Some(b)) = (w, block) {
-                let b: Figures = b;
-                println!("         impact / block, ns per contact-step: {:.3} ({} steps)", f.ns_per_contact_step / b.ns_per_contact_step, f.steps);
-            }
-            if w == Workload::Block {
-                block = Some(f);
-            }
-            match single.iter().find(|s| s.0 == w) {
-                Some(&(_, s1)) if t > 1 => {
-                    println!("         speed-up over 1 thread: {:.2} (parallel efficiency {:.0} %)", s1 / f.step_s, 100.0 * s1 / f.step_s / t as f64)
+    for &size in &args.size {
+        let mut single: Vec<(Workload, f64)> = Vec::new();
+        for &t in &threads {
+            let mut block = None;
+            for &w in workloads {
+                let f = bench::measure(w, size.0, size.1, steps_for(args.steps, size), args.repeats, t)?;
+                row(if w == Workload::Block { "block" } else { "impact" }, &f);
+                if let (Workload::Impact, Some(b)) = (w, block) {
+                    let b: Figures = b;
+                    println!("         impact / block, ns per contact-step: {:.3} ({} steps)", f.ns_per_contact_step / b.ns_per_contact_step, f.steps);
                 }
-                None if t == 1 => single.push((w, f.step_s)),
-                _ => {}
+                if w == Workload::Block {
+                    block = Some(f);
+                }
+                match single.iter().find(|s| s.0 == w) {
+                    Some(&(_, s1)) if t > 1 => {
+                        println!("         speed-up over 1 thread: {:.2} (parallel efficiency {:.0} %)", s1 / f.step_s, 100.0 * s1 / f.step_s / t as f64)
+                    }
+                    None if t == 1 => single.push((w, f.step_s)),
+                    _ => {}
+                }
             }
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_size_is_columns_by_rows_of_at_least_two() {
+        assert_eq!(parse_size("20x16"), Ok((20, 16)));
+        assert_eq!(parse_size("240×200"), Ok((240, 200)));
+        for bad in ["120", "1x100", "120x1", "ax2", "12x", "-3x4", ""] {
+            assert!(parse_size(bad).is_err(), "{bad:?} taken");
+        }
+    }
+
+    #[test]
+    fn every_size_does_the_default_blocks_work_per_repeat() {
+        assert_eq!(steps_for(500, (COLUMNS, ROWS)), 500);
+        // A quarter of the elements, four times the steps; twice, half (rounded).
+        assert_eq!(steps_for(500, (COLUMNS / 2, ROWS / 2)), 2000);
+        assert_eq!(steps_for(501, (2 * COLUMNS, ROWS)), 251);
+        // Never no step at all.
+        assert_eq!(steps_for(1, (100 * COLUMNS, ROWS)), 1);
+    }
 }
