@@ -61,7 +61,8 @@ pub unsafe fn evaluate<P: PartSet>(
         // Bonds: the elastic branch, as `bonds4::elastic` takes it. Its trial shear spring,
         // ut_prev + vt·Δt, is the frictional law's too.
         let bond = bonds4::elastic_branch(&g, cs, k, dt_s);
-        if _mm256_movemask_pd(_mm256_andnot_pd(bond.elastic, intact)) != 0 {
+        // Some intact lane not elastic (`vtestpd` of the two masks' sign bits).
+        if _mm256_testc_pd(bond.elastic, intact) == 0 {
             return None;
         }
         let (ut_trial, opening) = (bond.ut_m, _mm256_sub_pd(g.dist, rest));
