@@ -342,9 +342,8 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
                             c.ut_m = g.ut_m[l];
                             sink(from + l, c, &g.force[l]);
                         }
-                        // The scalar law books each elastic step's plastic work as 0 + 0: once
-                        // is the same sum.
-                        d.plastic_work_j += 0.0;
+                        // The scalar law books each elastic step's plastic work as 0 + 0, which
+                        // leaves the sum as it is: it starts at +0 and is never −0.
                         true
                     }
                     None => false,
