@@ -211,12 +211,30 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
     extra: &mut [Extra],
     force: &mut [ContactForce],
     partial: &mut [Dissipation],
-    out: S,
+    mut out: S,
 ) {
-    // A local copy, which the compiler keeps in registers (the argument lives in the caller's
-    // frame, where the running sum was loaded and stored per contact: 5 instructions more per
-    // contact-step on the benchmark block, by cachegrind).
-    let mut out = out;
+    if FOUR {
+        // A local copy, which the compiler keeps in registers (the argument lives in the
+        // caller's frame, where the running sum was loaded and stored per contact: 5
+        // instructions more per contact-step on the benchmark block, by cachegrind). Not in
+        // the scalar loop, which the copy made 1.25× slower (as it did the velocities cut to
+        // the positions' length in `each`), although it took fewer instructions.
+        let mut local = out;
+        return scatter_into::<P, RECORD, FOUR, S>(at, list, extra, force, partial, &mut local);
+    }
+    scatter_into::<P, RECORD, FOUR, S>(at, list, extra, force, partial, &mut out)
+}
+
+/// [`scatter`]'s loop, adding through `out`.
+#[inline(always)]
+fn scatter_into<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
+    at: &StepInput<'_>,
+    list: &mut [Contact],
+    extra: &mut [Extra],
+    force: &mut [ContactForce],
+    partial: &mut [Dissipation],
+    out: &mut S,
+) {
     let n = list.len();
     for (c, d) in partial.iter_mut().enumerate() {
         let (from, to) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
@@ -322,8 +340,10 @@ impl Sums for Serial<'_> {
 #[inline(always)]
 fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
     // The velocities cut to the positions' length: one bounds check then covers both (10.5
-    // instructions fewer per contact-step on the benchmark block, by cachegrind).
-    let at = &StepInput { vel: &at.vel[..at.pos.len()], ..*at };
+    // instructions fewer per contact-step on the benchmark block, by cachegrind; only for the
+    // lanes, see `scatter`).
+    let cut = if FOUR { StepInput { vel: &at.vel[..at.pos.len()], ..*at } } else { StepInput { ..*at } };
+    let at = &cut;
     let mut scratch = Extra::new(0.0);
     let mut from = 0;
     #[cfg(target_arch = "x86_64")]
