@@ -3,6 +3,8 @@
 #   1. the kernel: `demsweep bench` (bonded block and the impact workload, 1 and 2 threads), then
 #      `demsweep bench --laws`: the block with each optional law on and off beside the simple
 #      kernel (linear springs, central differences), and the bytes per element and per contact;
+#      and the block on one thread at five sizes, 312 to 191 800 elements (`--size`): the cost
+#      per contact-step against the problem's size, from the first level of cache to past the last;
 #   2. one full-resolution penetration event (sweeps/penetration.toml, 500 ft/s, until settled,
 #      one thread): steps, Δt, wall, element-steps per second, peak RSS; each run followed by two
 #      at once (one per core), whose slowdown bounds any two-thread sweep's efficiency;
@@ -28,6 +30,8 @@ echo "== 1. kernel (demsweep bench --workload impact --threads 1,2 --repeats $re
 "$bin" bench --workload impact --threads 1,2 --repeats "$repeats"
 echo
 "$bin" bench --laws --steps 300 --repeats "$((repeats > 5 ? repeats : 5))"
+echo
+"$bin" bench --threads 1 --repeats "$repeats" --size 20x16,40x32,120x100,240x200,480x400
 
 echo
 echo "== 2. one full-resolution penetration event at 500 ft/s, one thread, each run followed by two"
