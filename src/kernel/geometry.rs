@@ -91,6 +91,18 @@ pub(crate) unsafe fn xy(a: &[[f64; 3]], rows: [usize; 4]) -> (std::arch::x86_64:
     }
 }
 
+/// A placeholder geometry (all lanes zero), to fill a buffer before it is written.
+///
+/// # Safety
+/// As [`four`].
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+pub unsafe fn four_zero() -> Four {
+    use std::arch::x86_64::*;
+    // SAFETY: AVX (the caller's contract).
+    unsafe { Four { d2_m2: _mm256_setzero_pd(), d_m: _mm256_setzero_pd(), nx: _mm256_setzero_pd(), ny: _mm256_setzero_pd() } }
+}
+
 /// The geometry of the four contacts `cs` at `pos` ([`of`] in each lane).
 ///
 /// # Safety
