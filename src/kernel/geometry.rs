@@ -97,7 +97,7 @@ pub(crate) unsafe fn xy(a: &[[f64; 3]], rows: [usize; 4]) -> (std::arch::x86_64:
 /// As [`four`].
 #[cfg(target_arch = "x86_64")]
 #[inline(always)]
-pub unsafe fn four_zero() -> Four {
+pub(crate) unsafe fn four_zero() -> Four {
     use std::arch::x86_64::*;
     // SAFETY: AVX (the caller's contract).
     unsafe { Four { d2_m2: _mm256_setzero_pd(), d_m: _mm256_setzero_pd(), nx: _mm256_setzero_pd(), ny: _mm256_setzero_pd() } }
