@@ -167,7 +167,8 @@ pub struct Pieces<'a> {
 }
 
 /// Several threads: the pieces (whole chunks) scatter their forces (`pieces`), each thread
-/// taking its span's (`spans`), then the records are added in order.
+/// taking its span's (`spans`), then the records are added in order (on the pool, each thread
+/// its part of the elements).
 #[inline(never)]
 fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
@@ -199,7 +200,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
         }
         scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
     });
-    pieces::fix_up(sums, records);
+    pieces::fix_up_on_pool(sums, records);
 }
 
 /// Each contact's force added to its two elements by `out` as it goes (and stored in `force`
