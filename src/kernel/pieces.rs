@@ -15,6 +15,8 @@
 //! every force twice through a scattered index (2.4× the one-thread motion stage on the
 //! level-2 penetration event, the largest part of why two threads were 1.52× one).
 
+use rayon::prelude::*;
+
 use super::contacts::{Contact, ContactForce};
 use super::forces::Sums;
 
@@ -231,15 +233,29 @@ pub fn fix_up(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
     fix_up_part(sums, 0, records);
 }
 
+/// Records per step from which [`fix_up_on_pool`] uses the pool: below, the fork and join
+/// cost more than half the adding saves (the peers' beam on two threads, ~4 900 records a
+/// step: its contact stage 1.05–1.08× the time on the pool, five runs; the level-2 event,
+/// ~25 000: 0.985–0.994×).
+pub const POOL_RECORDS: usize = 16_384;
+
 /// [`fix_up`] on the pool: the sums cut into one part of elements per thread, each part
 /// adding the records that fall in it, all of them in the same order as [`fix_up`], so each
 /// element's sum is the same to the bit. Every part reads every record (the level-2 event on
 /// two threads: ~25 000 records, 0.8 MB, per step), but adds only its own: the contact stage
 /// 0.985–0.994× the time of the serial fix-up (steps of one run alternately, three runs).
+/// Serial below [`POOL_RECORDS`] records.
 pub fn fix_up_on_pool(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
-    let parts = rayon::current_num_threads().max(1);
+    fix_up_in_parts(sums, records, POOL_RECORDS);
+}
+
+/// [`fix_up_on_pool`] on the pool from `pool_from` records.
+fn fix_up_in_parts(sums: &mut [[f64; 3]], records: &[Vec<Record>], pool_from: usize) {
+    let parts = rayon::current_num_threads();
+    if parts < 2 || records.iter().map(Vec::len).sum::<usize>() < pool_from {
+        return fix_up(sums, records);
+    }
     let part = sums.len().div_ceil(parts).max(1);
-    use rayon::prelude::*;
     sums.par_chunks_mut(part).enumerate().for_each(|(k, s)| fix_up_part(s, k * part, records));
 }
 
@@ -302,6 +318,13 @@ mod tests {
     }
 
     fn pieced(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, usize) {
+        let (mut sums, records) = unfixed(list, n, cuts, order);
+        fix_up(&mut sums, &records);
+        (sums, records.iter().map(Vec::len).sum())
+    }
+
+    /// The pieces' sums and records before the fix-up, the pieces run in `order`.
+    fn unfixed(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, Vec<Vec<Record>>) {
         let (mut first, mut ranges) = (Vec::new(), Vec::new());
         plan(list, cuts, n, &mut first, &mut ranges);
         let mut sums = vec![[0.0; 3]; n];
@@ -319,8 +342,7 @@ mod tests {
                 s.finish();
             }
         }
-        fix_up(&mut sums, &records);
-        (sums, records.iter().map(Vec::len).sum())
+        (sums, records)
     }
 
     fn bits(s: &[[f64; 3]]) -> Vec<u64> {
@@ -357,18 +379,7 @@ mod tests {
         let n = 400;
         let l = list(n as u32);
         let cuts = even(&l, 64);
-        let (mut first, mut ranges) = (Vec::new(), Vec::new());
-        plan(&l, &cuts, n, &mut first, &mut ranges);
-        let mut sums = vec![[0.0; 3]; n];
-        let mut records = vec![Vec::new(); ranges.len()];
-        let own = ranges.iter().map(|r| r.start as usize..r.end as usize);
-        for (p, (mine, kept)) in split(&mut sums, own).into_iter().zip(records.iter_mut()).enumerate() {
-            let mut s = PieceSums::new(mine, ranges[p].start, kept);
-            for (k, c) in l.iter().enumerate().take(cuts[p + 1]).skip(cuts[p]) {
-                s.add(c, &force(k));
-            }
-            s.finish();
-        }
+        let (sums, records) = unfixed(&l, n, &cuts, &(0..cuts.len() - 1).collect::<Vec<_>>());
         let kept: usize = records.iter().map(Vec::len).sum();
         assert!(kept > 100, "only {kept} records: too few to test the parts' boundaries");
         let mut want = sums.clone();
@@ -377,7 +388,8 @@ mod tests {
         for threads in [1, 2, 3, 8] {
             let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
             let mut got = sums.clone();
-            pool.install(|| fix_up_on_pool(&mut got, &records));
+            // From any number of records: the default's threshold would keep these few serial.
+            pool.install(|| fix_up_in_parts(&mut got, &records, 0));
             assert!(bits(&got) == bits(&want), "{threads} threads: the sums differ from the serial fix-up's");
         }
     }
