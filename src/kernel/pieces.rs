@@ -230,7 +230,14 @@ impl Sums for PieceSums<'_> {
 /// Add every piece's records to the sums, piece by piece, each in its contact order (the
 /// reference for [`fix_up_on_pool`]).
 pub fn fix_up(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
-    fix_up_part(sums, 0, records);
+    // Indexed, not looked up as the parts are: a record for an element that does not exist is
+    // a bug of the plan, and stops here.
+    for r in records.iter().flatten() {
+        let s = &mut sums[r.e as usize];
+        s[0] += r.add[0];
+        s[1] += r.add[1];
+        s[2] += r.add[2];
+    }
 }
 
 /// Records per step from which [`fix_up_on_pool`] uses the pool: below, the fork and join
