@@ -10,8 +10,6 @@
 //! (see `stability`). The same pass watches for blow-up and measures how far elements moved
 //! since the last neighbour rebuild.
 
-use rayon::prelude::*;
-
 use super::contacts::Contacts;
 use super::state::Elements;
 
@@ -181,8 +179,9 @@ pub struct Motion<'a> {
     pub p: MotionParams,
     /// One report per chunk (output).
     pub partial: &'a mut [MotionReport],
-    /// Chunks on rayon's pool.
-    pub parallel: bool,
+    /// On the pool, in spans of chunks, one per thread (`spans`): the chunk each span starts
+    /// at, from 0, then the number of chunks. None: on this thread.
+    pub spans: Option<&'a [usize]>,
 }
 
 /// Advance every element by one step. `parts.frame`: the mass-proportional damping acts on the
@@ -300,7 +299,7 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, sums, rebuild_pos, margin_m, drive, p, partial, parallel } = m;
+    let Motion { el, pos, vel, force, sums, rebuild_pos, margin_m, drive, p, partial, spans } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
@@ -414,16 +413,10 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         r
     };
     assert_eq!(sums.len(), pos.len(), "the motion stage reads the contact sums stage 1 made");
-    if parallel {
-        pos.par_chunks_mut(CHUNK)
-            .zip(vel.par_chunks_mut(CHUNK))
-            .zip(force.par_chunks_mut(CHUNK))
-            .zip(partial.par_iter_mut())
-            .zip(sums.par_chunks_mut(CHUNK))
-            .enumerate()
-            // Each chunk a job an idle thread can take, as the contact stage's pieces are.
-            .with_max_len(1)
-            .for_each(|(k, ((((ps, vs), fs), out), ss))| *out = run(k, ps, vs, fs, ss));
+    if let Some(starts) = spans {
+        let jobs: Vec<_> =
+            pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate().collect();
+        super::spans::run(jobs, starts, |(k, ((((ps, vs), fs), out), ss))| *out = run(k, ps, vs, fs, ss));
     } else {
         for (k, ((((ps, vs), fs), out), ss)) in
             pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate()

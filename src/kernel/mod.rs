@@ -106,6 +106,8 @@ struct Scratch {
     records: Vec<Vec<pieces::Record>>,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
+    /// The motion stage's spans of chunks on the pool (`integrate::Motion::spans`).
+    motion_spans: Vec<usize>,
 }
 
 /// A model ready to step.
@@ -265,6 +267,19 @@ impl Model {
         s.motion_partial.resize(n_chunks, MotionReport::default());
         let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
         let st = &mut self.state;
+        // On the pool, each thread moves the elements its span of the contact stage added into
+        // (to the nearest chunk), and the next contact stage finds them in its cache: the two
+        // stages 0.968–0.996× the time of rayon's chunks taken by whichever thread was free
+        // (the level-2 event on two threads, steps of one run alternately, six runs, median
+        // 0.979). Stealing still evens out the rest (`spans`).
+        let spans = parallel.then(|| {
+            let chunk_of = |e: usize| ((e + integrate::CHUNK / 2) / integrate::CHUNK).min(n_chunks);
+            s.motion_spans.clear();
+            s.motion_spans.push(0);
+            s.motion_spans.extend(st.contacts.span_first_element.iter().skip(1).map(|&e| chunk_of(e)));
+            s.motion_spans.push(n_chunks);
+            &s.motion_spans[..]
+        });
         let (el, p) = (&self.el, self.motion);
         let motion = integrate::Motion {
             el,
@@ -277,7 +292,7 @@ impl Model {
             drive,
             p,
             partial: &mut s.motion_partial,
-            parallel,
+            spans,
         };
         integrate::advance(parts, motion);
         let mut total = MotionReport::default();

@@ -1,9 +1,10 @@
 //! Jobs on the pool in spans, one span per thread: each thread takes the jobs of its own span
 //! from the front, in order, and when its span is empty takes what is left of the others from
-//! their backs. The thread that calls takes the first span, as it takes the first half of a
-//! rayon parallel iterator (the motion stage's), so a thread tends to find the elements of its
-//! span in its own cache from the stage before; and with the jobs shrinking towards each span's
-//! end, what another thread takes first is small, and the threads finish closer together.
+//! their backs. The thread that calls takes the first span, in both stages of a step on the
+//! pool (the contact stage's pieces, the motion stage's chunks of the same elements), so a
+//! thread tends to find the elements of its span in its own cache from the stage before; and
+//! with the jobs shrinking towards each span's end, what another thread takes first is small,
+//! and the threads finish closer together.
 //!
 //! Measured on the level-2 penetration event on two threads, the contact stage timed on alternate
 //! steps of one run (so that the machine's spells cancel; three runs each):
