@@ -413,16 +413,12 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
         r
     };
     assert_eq!(sums.len(), pos.len(), "the motion stage reads the contact sums stage 1 made");
-    if let Some(starts) = spans {
-        let jobs: Vec<_> =
-            pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate().collect();
-        super::spans::run(jobs, starts, |(k, ((((ps, vs), fs), out), ss))| *out = run(k, ps, vs, fs, ss));
-    } else {
-        for (k, ((((ps, vs), fs), out), ss)) in
-            pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate()
-        {
-            *out = run(k, ps, vs, fs, ss);
-        }
+    let chunks = pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate();
+    type Rows<'r> = &'r mut [[f64; 3]];
+    let one = |(k, ((((ps, vs), fs), out), ss)): (usize, ((((Rows, Rows), Rows), &mut MotionReport), Rows))| *out = run(k, ps, vs, fs, ss);
+    match spans {
+        Some(starts) => super::spans::run(chunks.collect(), starts, one),
+        None => chunks.for_each(one),
     }
 }
 
