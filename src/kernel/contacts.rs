@@ -89,10 +89,6 @@ pub struct Contacts {
     /// The pieces' spans, one per thread: span s is pieces `piece_spans[s]..piece_spans[s + 1]`.
     #[serde(skip)]
     pub piece_spans: Vec<usize>,
-    /// Where each span's elements begin: the first element of its first piece's range, span by
-    /// span (the motion stage gives each thread the elements its span adds into).
-    #[serde(skip)]
-    pub span_first_element: Vec<usize>,
     /// Scratch of the plan: each element's first piece.
     #[serde(skip)]
     first_piece: Vec<u32>,
@@ -150,9 +146,6 @@ impl Contacts {
         let (threads, most) = self.piece_rule.expect("a rule to plan by");
         super::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
         super::pieces::plan(&self.list, &self.piece_cuts, n_elements, &mut self.first_piece, &mut self.piece_ranges);
-        self.span_first_element.clear();
-        let firsts = self.piece_spans[..self.piece_spans.len() - 1].iter().map(|&p| self.piece_ranges[p].start as usize);
-        self.span_first_element.extend(firsts);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's

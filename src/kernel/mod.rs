@@ -273,10 +273,13 @@ impl Model {
         // (the level-2 event on two threads, steps of one run alternately, six runs, median
         // 0.979). Stealing still evens out the rest (`spans`).
         let spans = parallel.then(|| {
-            let chunk_of = |e: usize| ((e + integrate::CHUNK / 2) / integrate::CHUNK).min(n_chunks);
+            // Span s's elements begin where its first piece's range does.
+            let c = &st.contacts;
+            let chunk_of = |e: u32| ((e as usize + integrate::CHUNK / 2) / integrate::CHUNK).min(n_chunks);
+            let later_spans = c.piece_spans.iter().take(c.piece_spans.len().saturating_sub(1)).skip(1);
             s.motion_spans.clear();
             s.motion_spans.push(0);
-            s.motion_spans.extend(st.contacts.span_first_element.iter().skip(1).map(|&e| chunk_of(e)));
+            s.motion_spans.extend(later_spans.map(|&p| chunk_of(c.piece_ranges[p].start)));
             s.motion_spans.push(n_chunks);
             &s.motion_spans[..]
         });
