@@ -167,8 +167,8 @@ pub struct Pieces<'a> {
 }
 
 /// Several threads: the pieces (whole chunks) scatter their forces (`pieces`), each thread
-/// taking its span's (`spans`), then the records are added in order (on the pool, each thread
-/// its part of the elements).
+/// taking its span's (`spans`), then the records are added in order (`pieces::fix_up_on_pool`:
+/// each thread its part of the elements, from `pieces::POOL_RECORDS` records a step).
 #[inline(never)]
 fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
