@@ -26,7 +26,8 @@ use super::forces::Sums;
 /// chunks cut 27, 8, 4, 2 instead of 11, 16, 8, 4, 2 under a cap of 16 — the two front pieces
 /// were always the owner's anyway, and their cut sent ~2 000 contributions a step through the
 /// records; the contact stage 0.983–0.990× the time, steps of one run alternately under each
-/// cap, three runs.)
+/// cap, three runs — within the ~2 % by which alternate steps differ on two threads with the
+/// same code, README.)
 pub const PIECE: usize = 32 * super::forces::CHUNK;
 
 /// The pieces for `contacts` contacts on `threads` threads, pieces of `most` contacts at most
@@ -250,8 +251,9 @@ pub const POOL_RECORDS: usize = 16_384;
 /// adding the records that fall in it, all of them in the same order as [`fix_up`], so each
 /// element's sum is the same to the bit. Every part reads every record (the level-2 event on
 /// two threads: ~25 000 records, 0.8 MB, per step), but adds only its own: the contact stage
-/// 0.985–0.994× the time of the serial fix-up (steps of one run alternately, three runs).
-/// Serial below [`POOL_RECORDS`] records.
+/// 0.985–0.994× the time of the serial fix-up (steps of one run alternately, three runs:
+/// within what alternate steps differ by on two threads with the same code, README). Serial
+/// below [`POOL_RECORDS`] records.
 pub fn fix_up_on_pool(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
     fix_up_in_parts(sums, records, POOL_RECORDS);
 }
