@@ -247,6 +247,24 @@ pub struct LawFigures {
     pub step_s: f64,
     /// Fastest and slowest repeat, s per step.
     pub range_s: (f64, f64),
+    /// Each round's time per step, in round order, s.
+    pub rounds_s: Vec<f64>,
+}
+
+impl LawFigures {
+    /// This variant's time against `other`'s: the median of the rounds' own ratios. A round
+    /// times every variant within a second or two, so the ratio within it shares the machine's
+    /// spell; the ratio of the two medians need not (the spells here move a variant's time by
+    /// up to 1.5× between rounds).
+    pub fn ratio_to(&self, other: &LawFigures) -> f64 {
+        let mut r: Vec<f64> = self.rounds_s.iter().zip(&other.rounds_s).map(|(a, b)| a / b).collect();
+        r.sort_by(f64::total_cmp);
+        match r.len() {
+            0 => f64::NAN,
+            n if n % 2 == 1 => r[n / 2],
+            n => 0.5 * (r[n / 2 - 1] + r[n / 2]),
+        }
+    }
 }
 
 /// The block on one thread with each set of optional parts in `sets`, the first set again
@@ -285,13 +303,14 @@ pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repe
             times[models.len()].push(t0.elapsed().as_secs_f64() / steps as f64);
         }
         let mut out = Vec::new();
-        for (k, t) in times.iter_mut().enumerate() {
+        for (k, rounds_s) in times.into_iter().enumerate() {
+            let mut t = rounds_s.clone();
             t.sort_by(f64::total_cmp);
             let (name, contacts) = match models.get(k) {
                 Some(m) => (names[k].clone(), m.state.contacts.len()),
                 None => ("simple".to_string(), plain.bonds()),
             };
-            out.push(LawFigures { name, contacts, step_s: t[t.len() / 2], range_s: (t[0], t[t.len() - 1]) });
+            out.push(LawFigures { name, contacts, step_s: t[t.len() / 2], range_s: (t[0], t[t.len() - 1]), rounds_s });
         }
         Ok(out)
     })
@@ -349,5 +368,20 @@ mod tests {
             let rel = (f.element_steps_per_s * f.step_s / elements as f64 - 1.0).abs();
             assert!(rel < 1e-12, "{threads} threads: element-steps per second off by {rel:e}");
         }
+    }
+
+    fn figures(rounds_s: &[f64]) -> LawFigures {
+        LawFigures { name: String::new(), contacts: 0, step_s: 0.0, range_s: (0.0, 0.0), rounds_s: rounds_s.to_vec() }
+    }
+
+    /// Paired by round: a spell that slows both variants in one round leaves their ratio alone,
+    /// where the ratio of the medians takes it (here 2 against the rounds' 1, 1.5 and 2).
+    #[test]
+    fn law_ratios_pair_the_rounds() {
+        let a = figures(&[1.0, 0.75, 1.0]);
+        let b = figures(&[1.0, 0.5, 0.5]);
+        assert_eq!(a.ratio_to(&b), 1.5);
+        assert_eq!(figures(&[2.0, 3.0, 9.0, 4.0]).ratio_to(&figures(&[1.0, 1.0, 3.0, 2.0])), 2.5);
+        assert!(figures(&[]).ratio_to(&figures(&[])).is_nan());
     }
 }

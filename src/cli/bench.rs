@@ -58,9 +58,12 @@ fn laws(args: &Args) -> Result<()> {
         Laws { compaction: true, ..none },
         Laws::ALL,
     ];
-    println!("demsweep bench --laws: close-packed block {COLUMNS} × {ROWS}, one thread, {} steps × {} rounds (round-robin), medians", args.steps, args.repeats);
+    println!(
+        "demsweep bench --laws: close-packed block {COLUMNS} × {ROWS}, one thread, {} steps × {} rounds (round-robin); times medians, ratios medians of each round's own",
+        args.steps, args.repeats
+    );
     let rows = bench::measure_laws(&sets, COLUMNS, ROWS, args.steps, args.repeats)?;
-    let (none_s, simple_s) = (rows[0].step_s, rows[rows.len() - 1].step_s);
+    let (none_row, simple_row) = (&rows[0], &rows[rows.len() - 1]);
     for (name, laws) in [("none", none), ("all", Laws::ALL)] {
         let (e, c) = bench::footprint(&bench::workload_with(COLUMNS, ROWS, laws)?);
         println!("memory, optional parts {name}: {e:.0} bytes per element, {c:.0} bytes per contact");
@@ -74,8 +77,8 @@ fn laws(args: &Args) -> Result<()> {
             r.step_s * 1e3,
             r.range_s.0 * 1e3,
             r.range_s.1 * 1e3,
-            r.step_s / none_s,
-            r.step_s / simple_s
+            r.ratio_to(none_row),
+            r.ratio_to(simple_row)
         );
     }
     Ok(())
