@@ -1,9 +1,9 @@
 //! `demsweep ballistic`: the scabbing and perforation thresholds of a penetration scene. Every
 //! velocity of the range in parallel (the sweep engine), then both thresholds bisected
 //! concurrently (each on its own thread at its own pace) between the last velocity without and
-//! the first with the outcome, to a tolerance; a Lambert–Jonas fit of the
-//! residual velocities as a second estimate of the ballistic limit; the empirical formulas'
-//! thresholds for the same wall beside them (`thresholds.csv`); a picture.
+//! the first with the outcome, to a tolerance; a Lambert–Jonas fit of the residual velocities
+//! as a second estimate of the ballistic limit; the empirical formulas' thresholds for the same
+//! wall beside them (`thresholds.csv`); a picture.
 //!
 //! Resumable: the runs table is the state. A rerun with the same arguments finds every
 //! finished run (grid or bisection: the bisection's velocities follow from the runs, so they
