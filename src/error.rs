@@ -43,6 +43,12 @@ pub enum Error {
         /// What was seen.
         detail: String,
     },
+    /// A run ended early because nobody needs it any more (a guess of the ballistic
+    /// bisection that an outcome ruled out, [`crate::run::Lend::wanted`]); never shown as a failure.
+    Abandoned {
+        /// Steps completed when it ended.
+        step: u64,
+    },
     /// File-system failure.
     Io {
         /// Path involved.
@@ -73,7 +79,7 @@ impl Error {
         match self {
             Error::Input { .. } | Error::Material { .. } | Error::UnstableStep { .. } => 2,
             Error::BlowUp { .. } => 3,
-            Error::Io { .. } => 1,
+            Error::Io { .. } | Error::Abandoned { .. } => 1,
         }
     }
 
@@ -99,6 +105,7 @@ impl fmt::Display for Error {
                 f,
                 "numerical blow-up at step {step} (t = {time_s:.6e} s), element {element}: {detail}"
             ),
+            Error::Abandoned { step } => write!(f, "run abandoned at step {step}: no longer needed"),
             Error::Io { path, message } => write!(f, "{}: {}", path.display(), message),
         }
     }

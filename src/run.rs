@@ -201,9 +201,14 @@ pub trait Lend: Sync {
     fn spare(&self) -> bool;
     /// The pool to step on while a core is spare.
     fn pool(&self) -> &rayon::ThreadPool;
+    /// False once nobody needs the run (a guess an outcome has ruled out): it ends at the next
+    /// look with [`Error::Abandoned`], its core free for a run that is needed.
+    fn wanted(&self) -> bool {
+        true
+    }
 }
 
-/// Steps between two looks at [`Lend::spare`] (an atomic load or two).
+/// Steps between two looks at [`Lend::spare`] and [`Lend::wanted`] (an atomic load or two).
 pub const LEND_POLL_STEPS: u64 = 10;
 
 /// How to run.
@@ -276,6 +281,10 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         if let Some(l) = opts.lend
             && s.is_multiple_of(LEND_POLL_STEPS)
         {
+            if !l.wanted() {
+                m.threading = own;
+                return Err(Error::Abandoned { step: s });
+            }
             borrowed = l.spare().then(|| l.pool());
             m.threading = if borrowed.is_some() { Threading::Pool } else { own };
         }

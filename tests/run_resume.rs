@@ -201,3 +201,24 @@ fn a_run_stepping_in_batches_looks_records_and_checkpoints_at_the_steps_it_would
     // per 5 steps).
     assert_eq!(saved, (1..=(cap - 1) / 11).map(|k| 1 + (11 * k / 5) as usize).collect::<Vec<_>>());
 }
+
+/// A run nobody needs any more (a ballistic guess ruled out) ends at the first look at its
+/// lender after the flag turns, with `Error::Abandoned` naming the step.
+#[test]
+fn a_run_no_longer_wanted_ends_at_the_next_look() {
+    struct Lender(std::sync::atomic::AtomicU64);
+    impl run::Lend for Lender {
+        fn spare(&self) -> bool {
+            false
+        }
+        fn pool(&self) -> &rayon::ThreadPool {
+            unreachable!("never spare")
+        }
+        fn wanted(&self) -> bool {
+            self.0.fetch_add(1, std::sync::atomic::Ordering::SeqCst) < 3
+        }
+    }
+    let lender = Lender(Default::default());
+    let r = run::run_with(plate().build().unwrap(), run::Options { lend: Some(&lender), ..Default::default() });
+    assert_eq!(r.err(), Some(Error::Abandoned { step: 3 * run::LEND_POLL_STEPS }));
+}

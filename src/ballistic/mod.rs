@@ -1,7 +1,8 @@
 //! `demsweep ballistic`: the scabbing and perforation thresholds of a penetration scene. Every
 //! velocity of the range in parallel (the sweep engine), then both thresholds bisected
-//! concurrently (each on its own thread at its own pace) between the last velocity without and
-//! the first with the outcome, to a tolerance; a Lambert–Jonas fit of the residual velocities
+//! concurrently ([`schedule`]: a free thread makes a run a bisection needs, or else guesses
+//! the one it will need next) between the last velocity without and the first with the
+//! outcome, to a tolerance; a Lambert–Jonas fit of the residual velocities
 //! as a second estimate of the ballistic limit; the empirical formulas' thresholds for the same
 //! wall beside them (`thresholds.csv`); a picture.
 //!
@@ -13,6 +14,7 @@
 pub mod bracket;
 pub mod fit;
 pub mod plot;
+pub mod schedule;
 pub mod thresholds;
 
 use std::path::{Path, PathBuf};
@@ -188,41 +190,21 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], t
     if let Some(missing) = planned.iter().find(|j| !store.has(j)) {
         return Err(Error::input(out.display().to_string(), format!("the grid run {} is missing: run every shard first", missing.id())));
     }
-    // The two bisections run side by side, each on its own thread at its own pace (no
-    // lock-step rounds), each bracket read from the grid and its own runs only, so that its
-    // sequence of velocities — and the tables — do not depend on which run finished first.
-    let grid_jobs = planned.clone();
-    let shared = std::sync::Mutex::new(&mut *store);
-    let bisect = |column: &str, purpose: &str| -> Result<(Vec<Job>, usize, usize)> {
-        let (mut own, mut ran, mut skipped) = (grid_jobs.clone(), 0, 0);
-        loop {
-            let f = bracket::find(&points(&shared.lock().expect("no run panics while holding the table"), &own, column));
-            let Some(v) = f.next(tol_fps) else { break };
-            let j = job(v, purpose);
-            if engine.run_shared(&j, &shared)? {
-                ran += 1;
-            } else {
-                skipped += 1;
-            }
-            own.push(j);
-        }
-        Ok((own, ran, skipped))
-    };
-    // Plain threads, not rayon tasks: a rayon worker that waits (polars writing the Parquet
-    // table uses its own pool) steals other tasks of its pool, and would start the other
-    // bisection inside this one's lock on the table.
-    let (s, p) = if engine.thread_count() >= 2 {
-        std::thread::scope(|sc| {
-            let scab = sc.spawn(|| bisect("scabbed", "bisect scabbing"));
-            let perf = bisect("perforated", "bisect perforation");
-            (scab.join().expect("the scabbing bisection does not panic"), perf)
-        })
-    } else {
-        (bisect("scabbed", "bisect scabbing"), bisect("perforated", "bisect perforation"))
-    };
-    let ((own_s, ran_s, skip_s), (own_p, ran_p, skip_p)) = (s?, p?);
-    let (ran, skipped) = (ran_s + ran_p, skip_s + skip_p);
-    for j in own_s.iter().chain(&own_p) {
+    // The two bisections run side by side on the engine's threads (`schedule`), each bracket
+    // read from the grid and its own runs only, so that its sequence of velocities — and the
+    // tables — do not depend on which run finished first.
+    let chains = vec![
+        schedule::Chain::new("scabbed", "bisect scabbing", points(store, &planned, "scabbed")),
+        schedule::Chain::new("perforated", "bisect perforation", points(store, &planned, "perforated")),
+    ];
+    let level = engine.base.level();
+    let mut book = Kept { store: &mut *store, level: &level };
+    let make = |j: &Job, wanted: &std::sync::atomic::AtomicBool| engine.run_one(j, wanted);
+    let (chains, tally) = schedule::bisect(chains, &mut book, tol_fps, engine.thread_count(), engine.quiet, &make)?;
+    let (ran, skipped) = (tally.ran, tally.skipped);
+    let own = |c: &schedule::Chain| -> Vec<Job> { planned.iter().chain(&c.runs).cloned().collect() };
+    let (own_s, own_p) = (own(&chains[0]), own(&chains[1]));
+    for j in chains.iter().flat_map(|c| &c.runs) {
         if !planned.iter().any(|k| k.id() == j.id()) {
             planned.push(j.clone());
         }
@@ -246,6 +228,35 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], t
     let runs = store.table();
     plot::draw(&out.join("ballistic.png"), &runs, &ours, &formulas, grid)?;
     Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped })
+}
+
+/// The runs table as the bisections' book: a run is kept with the scene's level.
+struct Kept<'a> {
+    store: &'a mut Store,
+    level: &'a str,
+}
+
+impl schedule::Book for Kept<'_> {
+    fn outcome(&self, job: &Job, column: &str) -> Result<Option<bool>> {
+        if !self.store.has(job) {
+            return Ok(None);
+        }
+        let cell = self.store.get(job, column).ok_or_else(|| Error::input(self.store.dir.display().to_string(), format!("run {} has no column `{column}`", job.id())))?;
+        Ok(Some(cell == "true"))
+    }
+
+    fn keep(&mut self, job: &Job, row: Option<&schedule::Row>) -> Result<()> {
+        match row {
+            Some(r) => self.store.insert(job, self.level, r)?,
+            // Written at once: a bisection that finds every run it asks for done makes no
+            // insert that would write the table later, and its purpose would be lost on one
+            // thread while two threads, interleaving inserts, kept it (regression test
+            // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
+            None if self.store.add_purpose(job) => {}
+            None => return Ok(()),
+        }
+        self.store.write()
+    }
 }
 
 /// The Lambert–Jonas and Recht–Ipson fits to the perforating runs, V_bl inside the bracket.

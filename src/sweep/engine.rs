@@ -5,10 +5,9 @@
 //! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
 //! others go on.
 
-use super::claims::Claims;
 use super::job::{Base, Job, run_job};
 use super::progress::Progress;
-use super::share::Cores;
+use super::share::{Cores, Wanted};
 use super::store::Store;
 use crate::error::{Error, Result};
 
@@ -21,8 +20,6 @@ pub struct Engine<'a> {
     /// Its threads (resolved once, see [`Engine::new`]) and what they are doing (runs borrow
     /// the idle ones).
     cores: Cores,
-    /// The runs `run_shared` is making now (one maker per run).
-    claims: Claims,
 }
 
 /// What a call to [`Engine::run`] did.
@@ -40,7 +37,7 @@ impl<'a> Engine<'a> {
     /// An engine of `threads` threads (0: rayon's default, one per core unless
     /// RAYON_NUM_THREADS says otherwise) for `base`.
     pub fn new(base: &'a Base, threads: usize, quiet: bool) -> Engine<'a> {
-        Engine { base, quiet, cores: Cores::new(threads), claims: Claims::default() }
+        Engine { base, quiet, cores: Cores::new(threads) }
     }
 
     /// The threads it runs on: `threads`, or rayon's default for 0.
@@ -123,40 +120,14 @@ impl Engine<'_> {
 }
 
 impl Engine<'_> {
-    /// Run one job on the calling thread unless `store` holds it or another caller is making it
-    /// (then wait for that run: [`Claims`]), then add it to `store` and rewrite the tables (the
-    /// store shared by concurrent callers, e.g. two bisections). Returns whether it ran.
-    pub fn run_shared(&self, job: &Job, store: &std::sync::Mutex<&mut Store>) -> Result<bool> {
+    /// Make one run on the calling thread, borrowing the engine's idle cores, and end it early
+    /// ([`Error::Abandoned`]) once `wanted` is cleared; the row as (column, text). The caller
+    /// keeps the table (the ballistic bisection's schedule does).
+    pub fn run_one(&self, job: &Job, wanted: &std::sync::atomic::AtomicBool) -> Result<Vec<(String, String)>> {
         job.check(self.base)?;
-        let mut written = Ok(());
-        let claim = self.claims.claim(&job.id(), || {
-            let mut s = store.lock().expect("no run panics while holding the table");
-            // Written at once: a bisection that finds every run it asks for done makes no
-            // insert that would write the table later, and its purpose would be lost on one
-            // thread while two threads, interleaving inserts, kept it (regression test
-            // `sweep_engine::the_tables_are_the_same_on_one_thread_and_on_two`).
-            let has = s.has(job);
-            if has && s.add_purpose(job) {
-                written = s.write();
-            }
-            has
-        });
-        // Held until the row is in the store (dropped after `s` below).
-        let Some(_claim) = claim else { return written.map(|()| false) };
-        let t0 = std::time::Instant::now();
         self.cores.prepare()?;
-        let row = {
-            let _busy = self.cores.start(false);
-            run_job(self.base, job, Some(&self.cores))
-        }
-        .map_err(|e| Error::input("sweep", format!("run {} failed: {e}", job.id())))?;
-        if !self.quiet {
-            eprintln!("[{}] {}: {}  ({:.1} s)", job.purpose, job.id(), super::progress::outcome(&row), t0.elapsed().as_secs_f64());
-        }
-        let mut s = store.lock().expect("no run panics while holding the table");
-        s.insert(job, &self.base.level(), &row)?;
-        s.write()?;
-        Ok(true)
+        let _busy = self.cores.start(false);
+        run_job(self.base, job, Some(&Wanted { cores: &self.cores, flag: wanted }))
     }
 }
 

@@ -9,7 +9,6 @@
 //! included, and of the crate version), `build` (the program that made it, [`hash::build_id`])
 //! and `level`; a row can be traced to the exact run and the exact code.
 
-pub mod claims;
 pub mod engine;
 pub mod hash;
 pub mod job;

@@ -1,9 +1,10 @@
 //! Lending idle cores to the runs still going. A sweep runs each run on one thread; at the end
-//! of the grid, and when one bisection has finished before the other, a thread of the engine
-//! sits idle while the last run steps alone. [`Cores`] counts the runs in progress and the
-//! grid runs not yet started; a run asks it ([`Lend`]) every few steps and, while a core is
-//! spare, steps on a kernel pool of the engine's size (the kernel's results do not depend on
-//! the threads it steps on, so a run that switches back and forth gives the same bits).
+//! of the grid, and in a ballistic bisection when no thread has a run to make or guess
+//! (`ballistic::schedule`), a thread of the engine sits idle while the last run steps alone.
+//! [`Cores`] counts the runs in progress and the grid runs not yet started; a run asks it
+//! ([`Lend`]) every few steps and, while a core is spare, steps on a kernel pool of the
+//! engine's size (the kernel's results do not depend on the threads it steps on, so a run that
+//! switches back and forth gives the same bits).
 //!
 //! Why a pool of its own and only when no grid run is waiting: a rayon worker that waits for
 //! a join steals whatever its pool holds; in the engine's pool that can be a whole run, which
@@ -74,6 +75,29 @@ impl Lend for Cores {
 
     fn pool(&self) -> &rayon::ThreadPool {
         self.pool.get().expect("spare() is true only once the pool is built")
+    }
+}
+
+/// One run's view of the cores: theirs to borrow, and whether the run is still wanted (a
+/// flag its scheduler clears to end it, [`Lend::wanted`]).
+pub struct Wanted<'a> {
+    /// The engine's cores.
+    pub cores: &'a Cores,
+    /// Cleared when nobody needs the run any more.
+    pub flag: &'a std::sync::atomic::AtomicBool,
+}
+
+impl Lend for Wanted<'_> {
+    fn spare(&self) -> bool {
+        self.cores.spare()
+    }
+
+    fn pool(&self) -> &rayon::ThreadPool {
+        self.cores.pool()
+    }
+
+    fn wanted(&self) -> bool {
+        self.flag.load(Ordering::SeqCst)
     }
 }
 
