@@ -14,7 +14,7 @@
 #   3. the parallel efficiency of a ballistic sweep from 1 to 2 threads and its parts (the
 #      machine's, the scheduler's; scripts/sweep_efficiency.sh): the CI scene's sweep, REPEATS
 #      pairs (about 2 minutes each); with FULL=1 also the default sweep, one pair (about 15
-#      minutes on this machine: 550-570 s on one thread, 300-320 s on two);
+#      minutes on this machine: 550-610 s on one thread, 295-320 s on two);
 #   4. with FULL=1: `converge --mesh 3 --case penetration --threads 1` cost per level and the
 #      exponents of cost against element count N: per step (expected 1) and per simulated
 #      millisecond (expected 1.5, with Δt ∝ R ∝ N^-1/2). One thread, levels one after another:

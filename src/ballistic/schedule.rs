@@ -80,10 +80,10 @@ pub type Make<'a> = dyn Fn(&Job, &AtomicBool) -> Result<Row> + Sync + 'a;
 struct State<'b> {
     chains: Vec<Chain>,
     book: &'b mut dyn Book,
-    /// Runs made and not yet taken by a chain: velocity, row (or the run's error).
-    made: HashMap<String, (f64, Result<Row>, f64)>,
-    /// Runs in flight: velocity, the flag that keeps them going.
-    flight: HashMap<String, (f64, Arc<AtomicBool>)>,
+    /// Runs made and not yet taken by a chain: the row (or the run's error), and its wall time, s.
+    made: HashMap<String, (Result<Row>, f64)>,
+    /// Runs in flight: the flag that keeps each going.
+    flight: HashMap<String, Arc<AtomicBool>>,
     error: Option<Error>,
     done: bool,
     tally: Tally,
@@ -141,25 +141,25 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
             st = signal.wait(st).unwrap_or_else(|e| e.into_inner());
             continue;
         };
+        let guess = chance < 1.0;
         let flag = Arc::new(AtomicBool::new(true));
-        st.flight.insert(id.clone(), (v, flag.clone()));
-        if chance < 1.0 {
-            st.tally.guesses += 1;
-        }
+        st.flight.insert(id.clone(), flag.clone());
+        st.tally.guesses += usize::from(guess);
         drop(st);
         let t0 = Instant::now();
-        let made = make(&job(v, if chance < 1.0 { "guess" } else { "bisect" }), &flag);
+        let made = make(&job(v, if guess { "guess" } else { "bisect" }), &flag);
         let secs = t0.elapsed().as_secs_f64();
         st = lock();
         st.flight.remove(&id);
         if flag.load(Ordering::SeqCst) {
             if !quiet {
-                let what = if chance < 1.0 { format!("guess, p = {chance:.2}") } else { "bisect".into() };
+                let what = if guess { format!("guess, p = {chance:.2}") } else { "bisect".into() };
                 let outcome = made.as_ref().map_or_else(|e| format!("failed: {e}"), |r| crate::sweep::progress::outcome(r));
                 eprintln!("[{what}] {}: {outcome}  ({secs:.1} s)", job(v, "").id());
             }
-            st.made.insert(id, (v, made, secs));
-        } else {
+            st.made.insert(id, (made, secs));
+        } else if guess {
+            // Ruled out by an outcome (or the schedule ended: then nothing is counted on).
             st.tally.guesses_lost += 1;
             st.tally.lost_s += secs;
             if !quiet {
@@ -175,9 +175,9 @@ impl State<'_> {
     fn known(&self, v: f64, column: &str) -> Result<Option<bool>> {
         let j = job(v, "");
         match self.made.get(&j.id()) {
-            Some((_, Ok(row), _)) => Ok(row.iter().find(|(k, _)| k == column).map(|(_, x)| x == "true")),
+            Some((Ok(row), _)) => Ok(row.iter().find(|(k, _)| k == column).map(|(_, x)| x == "true")),
             // A failed run's outcome is not known; the chain that needs it reports the error.
-            Some((_, Err(_), _)) => Ok(None),
+            Some((Err(_), _)) => Ok(None),
             None => self.book.outcome(&j, column),
         }
     }
@@ -191,11 +191,11 @@ impl State<'_> {
                 let Some(v) = bracket::find(&chain.points).next(tol_fps) else { break };
                 let j = job(v, &chain.purpose);
                 match self.made.remove(&j.id()) {
-                    Some((_, Ok(row), _)) => {
+                    Some((Ok(row), _)) => {
                         self.book.keep(&j, Some(&row))?;
                         self.tally.ran += 1;
                     }
-                    Some((_, Err(e), _)) => return Err(Error::input("sweep", format!("run {} failed: {e}", j.id()))),
+                    Some((Err(e), _)) => return Err(Error::input("sweep", format!("run {} failed: {e}", j.id()))),
                     None if self.book.outcome(&j, &chain.column)?.is_some() => {
                         self.book.keep(&j, None)?;
                         self.tally.skipped += 1;
@@ -251,14 +251,14 @@ impl State<'_> {
 
     /// Runs in flight that no chain can need any more are told to end; made ones are dropped.
     fn rule_out(&mut self, wants: &HashMap<String, (f64, f64)>) {
-        for (id, (_, flag)) in &self.flight {
+        for (id, flag) in &self.flight {
             if !wants.contains_key(id) {
                 flag.store(false, Ordering::SeqCst);
             }
         }
         let lost: Vec<String> = self.made.keys().filter(|id| !wants.contains_key(*id)).cloned().collect();
         for id in lost {
-            let (_, _, secs) = self.made.remove(&id).expect("listed above");
+            let (_, secs) = self.made.remove(&id).expect("listed above");
             self.tally.guesses_lost += 1;
             self.tally.lost_s += secs;
         }
@@ -280,7 +280,7 @@ impl State<'_> {
     /// End the schedule: every run in flight is told to end; the first error is kept.
     fn finish(&mut self, error: Option<Error>) {
         self.done = true;
-        for (_, flag) in self.flight.values() {
+        for flag in self.flight.values() {
             flag.store(false, Ordering::SeqCst);
         }
         if self.error.is_none() {
