@@ -374,9 +374,12 @@ mod tests {
     fn more_threads_guess_and_keep_exactly_the_runs_of_one() {
         let mut one = Memo::default();
         let (serial_chains, _) = bisect(chains(SCAB, PERF), &mut one, 5.0, 1, true, &slow(0, SCAB, PERF)).unwrap();
+        // The shared first midpoint runs long enough that a second thread surely looks for work
+        // while it is in flight, however late a loaded machine starts that thread.
+        let make = |j: &Job, wanted: &AtomicBool| slow(if v_of(j) == 575.0 { 300 } else { 40 }, SCAB, PERF)(j, wanted);
         for threads in [2, 3] {
             let mut many = Memo::default();
-            let (done, tally) = bisect(chains(SCAB, PERF), &mut many, 5.0, threads, true, &slow(40, SCAB, PERF)).unwrap();
+            let (done, tally) = bisect(chains(SCAB, PERF), &mut many, 5.0, threads, true, &make).unwrap();
             assert_eq!(many.0, one.0, "{threads} threads: the same rows and purposes as one thread");
             assert_eq!(velocities(&done[0]), velocities(&serial_chains[0]));
             assert_eq!(velocities(&done[1]), velocities(&serial_chains[1]));
