@@ -23,10 +23,8 @@ use std::time::Instant;
 use super::bracket::{self, Point};
 use super::job;
 use crate::error::{Error, Result};
+pub use crate::sweep::Row;
 use crate::sweep::Job;
-
-/// A run's summary row, as (column, text).
-pub type Row = Vec<(String, String)>;
 
 /// Where the chains' runs are kept: the runs table.
 pub trait Book: Send {
@@ -59,7 +57,7 @@ impl Chain {
 }
 
 /// What the schedule did.
-#[derive(Debug, Clone, Default, PartialEq)]
+#[derive(Debug, Clone, Default)]
 pub struct Tally {
     /// Runs made now and kept (needed runs and guesses a chain took).
     pub ran: usize,

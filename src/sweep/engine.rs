@@ -5,7 +5,7 @@
 //! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
 //! others go on.
 
-use super::job::{Base, Job, run_job};
+use super::job::{Base, Job, Row, run_job};
 use super::progress::Progress;
 use super::share::{Cores, Wanted};
 use super::store::Store;
@@ -81,7 +81,7 @@ impl Engine<'_> {
         self.cores.queue(todo.len());
         let mut failed = Vec::new();
         let written: Result<()> = std::thread::scope(|s| {
-            let (tx, rx) = crossbeam_channel::unbounded::<(&Job, Result<Vec<(String, String)>>)>();
+            let (tx, rx) = crossbeam_channel::unbounded::<(&Job, Result<Row>)>();
             let writer = s.spawn(|| -> Result<()> {
                 let mut first_error = None;
                 for (job, result) in rx {
@@ -121,9 +121,9 @@ impl Engine<'_> {
 
 impl Engine<'_> {
     /// Make one run on the calling thread, borrowing the engine's idle cores, and end it early
-    /// ([`Error::Abandoned`]) once `wanted` is cleared; the row as (column, text). The caller
+    /// ([`Error::Abandoned`]) once `wanted` is cleared; the summary row. The caller
     /// keeps the table (the ballistic bisection's schedule does).
-    pub fn run_one(&self, job: &Job, wanted: &std::sync::atomic::AtomicBool) -> Result<Vec<(String, String)>> {
+    pub fn run_one(&self, job: &Job, wanted: &std::sync::atomic::AtomicBool) -> Result<Row> {
         job.check(self.base)?;
         self.cores.prepare()?;
         let _busy = self.cores.start(false);

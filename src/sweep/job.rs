@@ -66,9 +66,12 @@ impl Job {
     }
 }
 
+/// A run's summary row, as (column, text).
+pub type Row = Vec<(String, String)>;
+
 /// Run `job` on the calling thread, borrowing `lend`'s cores while they are idle; the row is
-/// the run's summary row, as (column, text).
-pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Vec<(String, String)>> {
+/// the run's summary row.
+pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Row> {
     match load_text(&base.text, &base.path, &job.overrides)? {
         SceneFile::Penetration(scene) => {
             let hooks = crate::penetration::Hooks { threading: Threading::Serial, lend, ..Default::default() };

@@ -19,6 +19,6 @@ pub mod share;
 pub mod store;
 
 pub use engine::{Engine, Finished};
-pub use job::{Job, run_job};
+pub use job::{Job, Row, run_job};
 pub use plan::{Vary, grid, from_table};
 pub use store::Store;
