@@ -34,6 +34,9 @@ const BLOCK: usize = 4096;
 /// Movers per block of a local search on the pool.
 const MOVERS_BLOCK: usize = 256;
 
+/// Wide elements per block of the full search on the pool.
+const WIDE_BLOCK: usize = 512;
+
 /// Cell coordinates are clamped to this range, so that a neighbour (±k) never aliases a cell.
 const CELL_LIMIT: i64 = i32::MAX as i64 - 1024;
 
@@ -70,6 +73,20 @@ fn in_blocks(pool: bool, n: usize, block: usize, out: &mut Vec<u64>, find: impl 
         })
         .collect();
     found.iter().for_each(|v| out.extend_from_slice(v));
+}
+
+/// Calls `each(b)` for every element b keyed in a cell (x, y) with |x − cx| ≤ k and |y − cy| ≤ k,
+/// row by row.
+#[inline(always)]
+fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), k: i64, mut each: impl FnMut(usize)) {
+    for y in cy - k..=cy + k {
+        let (lo, hi) = (cell_key(cx - k, y), cell_key(cx + k, y));
+        let from = keys.partition_point(|&(kk, _)| kk < lo);
+        let to = keys.partition_point(|&(kk, _)| kk <= hi);
+        for &(_, b) in &keys[from..to] {
+            each(b as usize);
+        }
+    }
 }
 
 fn cell_coords(key: u64) -> (i64, i64) {
@@ -126,7 +143,6 @@ impl BroadPhase {
         self.pairs.clear();
         let keys = &self.keyed;
         let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
-        let upper = |k: u64| keys.partition_point(|&(kk, _)| kk <= k);
         let is_wide = |e: usize| r[e] + margin(e) > usual;
         let test = |a: usize, b: usize, ca: [f64; 2], pairs: &mut Vec<u64>| reach_test(a, b, ca, &centre, r, &margin, pairs);
         // Usual–usual pairs: forward half-stencil (rest of own cell and (cx+1, cy), then the
@@ -167,23 +183,25 @@ impl BroadPhase {
         };
         in_blocks(pool, n, BLOCK, &mut self.pairs, usual_block);
         // Wide elements: every cell within their reach plus the widest one; a pair of two wide
-        // elements is taken once, from the smaller index.
+        // elements is taken once, from the smaller index. In blocks on the pool too: in an
+        // impact they can be a third of the elements or more (anything set moving faster than
+        // half its skin over the margin's look-ahead), each testing a 5 × 5 block of cells, and
+        // this loop was then most of a full search.
         let widest = self.wide.iter().map(|&e| r[e as usize] + margin(e as usize)).fold(usual, f64::max);
-        for &a in &self.wide {
-            let a = a as usize;
-            let ca = centre(a);
-            let (cx, cy) = cell_of(ca);
-            let k = ((r[a] + margin(a) + widest) * inv).ceil() as i64;
-            for y in cy - k..=cy + k {
-                let (from, to) = (lower(cell_key(cx - k, y)), upper(cell_key(cx + k, y)));
-                for &(_, b) in &keys[from..to] {
-                    let b = b as usize;
+        let wide_block = |wide: &[u32], pairs: &mut Vec<u64>| {
+            for &a in wide {
+                let a = a as usize;
+                let ca = centre(a);
+                let k = ((r[a] + margin(a) + widest) * inv).ceil() as i64;
+                each_around(keys, cell_of(ca), k, |b| {
                     if b != a && (!is_wide(b) || a < b) {
-                        test(a, b, ca, &mut self.pairs);
+                        test(a, b, ca, pairs);
                     }
-                }
+                });
             }
-        }
+        };
+        let wide = &self.wide;
+        in_blocks(pool, wide.len(), WIDE_BLOCK, &mut self.pairs, |b, pairs| wide_block(&wide[b], pairs));
         // Sort by (i, j): a counting sort on i, then each i's few partners in place.
         self.count.clear();
         self.count.resize(n + 1, 0);
@@ -245,22 +263,16 @@ impl BroadPhase {
         self.merged.extend(moved);
         std::mem::swap(&mut self.keyed, &mut self.merged);
         let keys = &self.keyed;
-        let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
-        let upper = |k: u64| keys.partition_point(|&(kk, _)| kk <= k);
         let search = |movers: &[u32], pairs: &mut Vec<u64>| {
             for &a in movers {
                 let a = a as usize;
                 let ca = centre(a);
-                let (cx, cy) = cell_of(ca);
                 let k = ((r[a] + margin(a) + widest_m) * inv).ceil() as i64;
-                for y in cy - k..=cy + k {
-                    for &(_, b) in &keys[lower(cell_key(cx - k, y))..upper(cell_key(cx + k, y))] {
-                        let b = b as usize;
-                        if b != a {
-                            reach_test(a, b, ca, &centre, r, &margin, pairs);
-                        }
+                each_around(keys, cell_of(ca), k, |b| {
+                    if b != a {
+                        reach_test(a, b, ca, &centre, r, &margin, pairs);
                     }
-                }
+                });
             }
         };
         self.pairs.clear();
@@ -346,7 +358,9 @@ mod tests {
         let n = 3 * BLOCK + 123;
         let (mut x, mut y): (Vec<f64>, Vec<f64>) = (0..n).map(|_| (rnd() * 1.2, rnd() * 1.2)).unzip();
         let r: Vec<f64> = (0..n).map(|_| 0.004 + 0.004 * rnd()).collect();
-        let m = |e: usize| if e.is_multiple_of(29) { 0.02 } else { 0.001 };
+        // Wide elements enough for several blocks of their own search too.
+        let m = |e: usize| if e.is_multiple_of(5) { 0.02 } else { 0.001 };
+        assert!(n / 5 > 3 * WIDE_BLOCK);
         let pool = rayon::ThreadPoolBuilder::new().num_threads(2).build().unwrap();
         let (mut serial, mut on_pool) = (BroadPhase::default(), BroadPhase::default());
         let (mut a, mut b) = (vec![], vec![]);
