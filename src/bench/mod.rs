@@ -152,7 +152,7 @@ pub fn impact_workload(columns: usize, rows: usize) -> Result<(Model, u64)> {
 }
 
 /// One benchmark measurement.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Figures {
     /// Elements.
     pub elements: usize,
@@ -174,6 +174,24 @@ pub struct Figures {
     pub rebuilds_per_1000: f64,
     /// Local neighbour updates per 1000 steps.
     pub local_updates_per_1000: f64,
+    /// Each round's wall time per step, in round order, s.
+    pub rounds_s: Vec<f64>,
+}
+
+impl Figures {
+    /// How many times faster this is than `other` (the same workload on another number of
+    /// threads, measured in the same rounds): the median of the rounds' own ratios.
+    pub fn speed_up_over(&self, other: &Figures) -> f64 {
+        median_ratio(&other.rounds_s, &self.rounds_s)
+    }
+}
+
+/// The median of the ratios a[k] / b[k] (the upper middle one of an even count, as the
+/// figures' medians).
+fn median_ratio(a: &[f64], b: &[f64]) -> f64 {
+    let mut r: Vec<f64> = a.iter().zip(b).map(|(a, b)| a / b).collect();
+    r.sort_by(f64::total_cmp);
+    r.get(r.len() / 2).copied().unwrap_or(f64::NAN)
 }
 
 /// Time `steps` steps of `model` (a fresh copy each repeat for the impact, which changes as it
@@ -190,49 +208,74 @@ fn time_steps(model: &mut Model, steps: u64) -> Result<(f64, f64, u64, u64)> {
     Ok((t0.elapsed().as_secs_f64(), contact_steps, model.state.rebuilds - rebuilds, model.state.local_updates - local))
 }
 
-/// Run `repeats` timings of workload `w` on a pool of `threads` threads (`steps` steps for
-/// the block; the impact runs its own count), with the other workers looking for work between
-/// the stages as a single run's do (`kernel::awake`).
-pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: usize, threads: usize) -> Result<Figures> {
-    let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().expect("thread pool");
-    pool.install(|| crate::kernel::awake::while_running(|| {
-        let mut runs = Vec::with_capacity(repeats);
-        let (elements, steps) = match w {
-            Workload::Block => {
-                let mut model = workload(columns, rows)?;
-                model.run_steps(steps.min(200))?; // warm caches and the allocator
-                for _ in 0..repeats {
-                    runs.push(time_steps(&mut model, steps)?);
-                }
-                (model.el.len(), steps)
+/// Run `repeats` rounds of workload `w` (`steps` steps for the block; the impact runs its own
+/// count), each round timing one repeat on a pool of each of `threads` threads in turn (the order
+/// reversed every other round), with the other workers looking for work between the stages as a
+/// single run's do (`kernel::awake`); one [`Figures`] per entry of `threads`. A round takes a
+/// second or two, so a thread count's time against another's within it shares the machine's
+/// spell ([`Figures::speed_up_over`]); timed one thread count after the other, the two-thread
+/// speed-up of the impact moved between 0.85× and 1.34× from one spell to the next.
+pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: usize, threads: &[usize]) -> Result<Vec<Figures>> {
+    let pools: Vec<rayon::ThreadPool> = threads.iter().map(|&t| rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("thread pool")).collect();
+    let timed = |pool: &rayon::ThreadPool, model: &mut Model, n: u64| pool.install(|| crate::kernel::awake::while_running(|| time_steps(model, n)));
+    // The block: one model per pool, warmed (caches, allocator) and then kept vibrating; the
+    // impact: a fresh copy for every repeat, since it changes as it runs.
+    let (mut kept, fresh, n) = match w {
+        Workload::Block => {
+            let built = workload(columns, rows)?;
+            let mut kept = Vec::with_capacity(pools.len());
+            for pool in &pools {
+                let mut m = built.clone();
+                timed(pool, &mut m, steps.min(200))?;
+                kept.push(m);
             }
-            Workload::Impact => {
-                let (model, n) = impact_workload(columns, rows)?;
-                for _ in 0..repeats {
-                    let mut m = model.clone();
-                    runs.push(time_steps(&mut m, n)?);
-                }
-                (model.el.len(), n)
-            }
-        };
-        let mut per = runs.iter().map(|r| r.0 / r.1 * 1e9).collect::<Vec<_>>();
-        per.sort_by(f64::total_cmp);
-        runs.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (wall, contact_steps, rebuilds, local) = runs[runs.len() / 2];
-        let step_s = wall / steps as f64;
-        Ok(Figures {
-            elements,
-            contacts: contact_steps / steps as f64,
-            steps,
-            threads,
-            step_s,
-            ns_per_contact_step: per[per.len() / 2],
-            element_steps_per_s: elements as f64 / step_s,
-            range_ns: (per[0], per[per.len() - 1]),
-            rebuilds_per_1000: 1000.0 * rebuilds as f64 / steps as f64,
-            local_updates_per_1000: 1000.0 * local as f64 / steps as f64,
-        })
-    }))
+            (kept, None, steps)
+        }
+        Workload::Impact => {
+            let (model, n) = impact_workload(columns, rows)?;
+            (Vec::new(), Some(model), n)
+        }
+    };
+    let mut runs = vec![Vec::with_capacity(repeats); pools.len()];
+    for round in 0..repeats {
+        let mut order: Vec<usize> = (0..pools.len()).collect();
+        if round % 2 == 1 {
+            order.reverse();
+        }
+        for k in order {
+            let run = match &fresh {
+                Some(model) => timed(&pools[k], &mut model.clone(), n)?,
+                None => timed(&pools[k], &mut kept[k], n)?,
+            };
+            runs[k].push(run);
+        }
+    }
+    let elements = fresh.as_ref().or(kept.first()).map_or(0, |m| m.el.len());
+    Ok(threads.iter().zip(runs).map(|(&t, runs)| figures(elements, n, t, runs)).collect())
+}
+
+/// The figures of `runs` (seconds, contact-steps, full rebuilds, local updates; in round order)
+/// of `steps` steps each on `threads` threads.
+fn figures(elements: usize, steps: u64, threads: usize, mut runs: Vec<(f64, f64, u64, u64)>) -> Figures {
+    let rounds_s: Vec<f64> = runs.iter().map(|r| r.0 / steps as f64).collect();
+    let mut per = runs.iter().map(|r| r.0 / r.1 * 1e9).collect::<Vec<_>>();
+    per.sort_by(f64::total_cmp);
+    runs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let (wall, contact_steps, rebuilds, local) = runs[runs.len() / 2];
+    let step_s = wall / steps as f64;
+    Figures {
+        elements,
+        contacts: contact_steps / steps as f64,
+        steps,
+        threads,
+        step_s,
+        ns_per_contact_step: per[per.len() / 2],
+        element_steps_per_s: elements as f64 / step_s,
+        range_ns: (per[0], per[per.len() - 1]),
+        rebuilds_per_1000: 1000.0 * rebuilds as f64 / steps as f64,
+        local_updates_per_1000: 1000.0 * local as f64 / steps as f64,
+        rounds_s,
+    }
 }
 
 /// One row of the optional-law benchmark.
@@ -257,9 +300,7 @@ impl LawFigures {
     /// two, so the ratio within it shares the machine's spell; the ratio of the two medians need
     /// not (the spells here move a variant's time by up to 1.5× between rounds).
     pub fn ratio_to(&self, other: &LawFigures) -> f64 {
-        let mut r: Vec<f64> = self.rounds_s.iter().zip(&other.rounds_s).map(|(a, b)| a / b).collect();
-        r.sort_by(f64::total_cmp);
-        r.get(r.len() / 2).copied().unwrap_or(f64::NAN)
+        median_ratio(&self.rounds_s, &other.rounds_s)
     }
 }
 
@@ -354,9 +395,12 @@ mod tests {
         let (columns, rows, steps) = (24, 14, 40);
         let built = workload(columns, rows).unwrap();
         let (elements, contacts) = (built.el.len(), built.state.contacts.len());
-        for threads in [1, 2] {
-            let f = measure(Workload::Block, columns, rows, steps, 3, threads).unwrap();
+        let figures = measure(Workload::Block, columns, rows, steps, 3, &[1, 2]).unwrap();
+        assert_eq!(figures.len(), 2);
+        for (f, threads) in figures.iter().zip([1, 2]) {
             assert_eq!((f.elements, f.steps, f.threads), (elements, steps, threads));
+            assert_eq!(f.rounds_s.len(), 3, "{threads} threads: one time per round");
+            assert!(f.rounds_s.iter().all(|&t| t > 0.0 && t.is_finite()), "{threads} threads: round times {:?}", f.rounds_s);
             assert_eq!(f.contacts, contacts as f64, "{threads} threads: the intact block keeps its bonds and meets no one");
             assert_eq!((f.rebuilds_per_1000, f.local_updates_per_1000), (0.0, 0.0), "{threads} threads: the block's elements never leave their margins");
             assert!(f.step_s > 0.0 && f.step_s.is_finite(), "{threads} threads: step time {}", f.step_s);
@@ -366,18 +410,41 @@ mod tests {
         }
     }
 
-    fn figures(rounds_s: &[f64]) -> LawFigures {
+    fn law_rounds(rounds_s: &[f64]) -> LawFigures {
         LawFigures { name: String::new(), contacts: 0, step_s: 0.0, range_s: (0.0, 0.0), rounds_s: rounds_s.to_vec() }
+    }
+
+    /// The speed-up on more threads pairs the rounds too, and reads as "times faster": the
+    /// other's time over this one's, round by round (here 2, 3 and 1: median 2, where the ratio
+    /// of the medians is 1.5).
+    #[test]
+    fn speed_ups_pair_the_rounds() {
+        let f = |threads, rounds_s: &[f64]| Figures {
+            elements: 1,
+            contacts: 1.0,
+            steps: 1,
+            threads,
+            step_s: 0.0,
+            ns_per_contact_step: 0.0,
+            element_steps_per_s: 0.0,
+            range_ns: (0.0, 0.0),
+            rebuilds_per_1000: 0.0,
+            local_updates_per_1000: 0.0,
+            rounds_s: rounds_s.to_vec(),
+        };
+        let (one, two) = (f(1, &[2.0, 6.0, 3.0]), f(2, &[1.0, 2.0, 3.0]));
+        assert_eq!(two.speed_up_over(&one), 2.0);
+        assert_eq!(one.speed_up_over(&two), 0.5);
     }
 
     /// Paired by round: a spell that slows both variants in one round leaves their ratio alone,
     /// where the ratio of the medians takes it (here 2 against the rounds' 1, 1.5 and 2).
     #[test]
     fn law_ratios_pair_the_rounds() {
-        let a = figures(&[1.0, 0.75, 1.0]);
-        let b = figures(&[1.0, 0.5, 0.5]);
+        let a = law_rounds(&[1.0, 0.75, 1.0]);
+        let b = law_rounds(&[1.0, 0.5, 0.5]);
         assert_eq!(a.ratio_to(&b), 1.5);
-        assert_eq!(figures(&[2.0, 3.0, 9.0, 4.0]).ratio_to(&figures(&[1.0, 1.0, 3.0, 2.0])), 3.0);
-        assert!(figures(&[]).ratio_to(&figures(&[])).is_nan());
+        assert_eq!(law_rounds(&[2.0, 3.0, 9.0, 4.0]).ratio_to(&law_rounds(&[1.0, 1.0, 3.0, 2.0])), 3.0);
+        assert!(law_rounds(&[]).ratio_to(&law_rounds(&[])).is_nan());
     }
 }

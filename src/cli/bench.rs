@@ -14,7 +14,8 @@ pub struct Args {
     /// 20 % of the block).
     #[arg(long, default_value_t = 500)]
     pub steps: u64,
-    /// Timed repeats (the median is reported).
+    /// Timed rounds, each timing one repeat on every thread count in turn (the medians are
+    /// reported; a speed-up is the median of the rounds' own ratios).
     #[arg(long, default_value_t = 7)]
     pub repeats: usize,
     /// Thread counts to measure (default: 1 and all available).
@@ -119,33 +120,32 @@ pub fn run(args: Args) -> Result<()> {
     };
     let sizes: Vec<String> = args.size.iter().map(|(c, r)| format!("{c} × {r}")).collect();
     println!(
-        "demsweep bench: close-packed block {}{}; median of {} repeats",
+        "demsweep bench: close-packed block {}{}; medians of {} rounds, each timing every thread count in turn",
         sizes.join(", "),
         if args.workload == Workload::Impact { ", and the seed's projectile at 1500 ft/s through 20 % of it" } else { ", all bonds intact, undamped" },
         args.repeats
     );
     println!("   work  threads  elements  contacts  ms/step   ns/contact-step  (min–max)      element-steps/s  rebuilds (local) /1000 steps");
     for &size in &args.size {
-        let mut single: Vec<(Workload, f64)> = Vec::new();
-        for &t in &threads {
-            let mut block = None;
-            for &w in workloads {
-                let f = bench::measure(w, size.0, size.1, steps_for(args.steps, size), args.repeats, t)?;
-                row(if w == Workload::Block { "block" } else { "impact" }, &f);
-                if let (Workload::Impact, Some(b)) = (w, block) {
-                    let b: Figures = b;
-                    println!("         impact / block, ns per contact-step: {:.3} ({} steps)", f.ns_per_contact_step / b.ns_per_contact_step, f.steps);
+        let mut block: Option<Vec<Figures>> = None;
+        for &w in workloads {
+            let figures = bench::measure(w, size.0, size.1, steps_for(args.steps, size), args.repeats, &threads)?;
+            for f in &figures {
+                row(if w == Workload::Block { "block" } else { "impact" }, f);
+            }
+            if let Some(one) = figures.iter().find(|f| f.threads == 1) {
+                for f in figures.iter().filter(|f| f.threads > 1) {
+                    let s = f.speed_up_over(one);
+                    println!("         speed-up on {} threads over 1: {s:.2} (parallel efficiency {:.0} %; median of the rounds' own ratios)", f.threads, 100.0 * s / f.threads as f64);
                 }
-                if w == Workload::Block {
-                    block = Some(f);
+            }
+            if let (Workload::Impact, Some(b)) = (w, &block) {
+                for (f, b) in figures.iter().zip(b) {
+                    println!("         impact / block on {} thread(s), ns per contact-step: {:.3} ({} steps)", f.threads, f.ns_per_contact_step / b.ns_per_contact_step, f.steps);
                 }
-                match single.iter().find(|s| s.0 == w) {
-                    Some(&(_, s1)) if t > 1 => {
-                        println!("         speed-up over 1 thread: {:.2} (parallel efficiency {:.0} %)", s1 / f.step_s, 100.0 * s1 / f.step_s / t as f64)
-                    }
-                    None if t == 1 => single.push((w, f.step_s)),
-                    _ => {}
-                }
+            }
+            if w == Workload::Block {
+                block = Some(figures);
             }
         }
     }
