@@ -211,10 +211,10 @@ fn time_steps(model: &mut Model, steps: u64) -> Result<(f64, f64, u64, u64)> {
 /// Run `repeats` rounds of workload `w` (`steps` steps for the block; the impact runs its own
 /// count), each round timing one repeat on a pool of each of `threads` threads in turn (the order
 /// reversed every other round), with the other workers looking for work between the stages as a
-/// single run's do (`kernel::awake`); one [`Figures`] per entry of `threads`. A round takes a
-/// second or two, so a thread count's time against another's within it shares the machine's
-/// spell ([`Figures::speed_up_over`]); timed one thread count after the other, the two-thread
-/// speed-up of the impact moved between 0.85× and 1.34× from one spell to the next.
+/// single run's do (`kernel::awake`); one [`Figures`] per entry of `threads`. A round takes
+/// under a second here, so a thread count's time against another's within it shares the
+/// machine's spell ([`Figures::speed_up_over`]); timed one thread count after the other, the
+/// two-thread speed-up of the impact moved between 0.85× and 1.34× from one spell to the next.
 pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: usize, threads: &[usize]) -> Result<Vec<Figures>> {
     let pools: Vec<rayon::ThreadPool> = threads.iter().map(|&t| rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("thread pool")).collect();
     let timed = |pool: &rayon::ThreadPool, model: &mut Model, n: u64| pool.install(|| crate::kernel::awake::while_running(|| time_steps(model, n)));
