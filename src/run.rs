@@ -282,7 +282,6 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
             && s.is_multiple_of(LEND_POLL_STEPS)
         {
             if !l.wanted() {
-                m.threading = own;
                 return Err(Error::Abandoned { step: s });
             }
             borrowed = l.spare().then(|| l.pool());
