@@ -22,6 +22,8 @@ pub struct BroadPhase {
     merged: Vec<(u64, u32)>,
     pairs: Vec<u64>,
     wide: Vec<u32>,
+    /// Scratch: whether each element is wide (its reach r + m above the usual one).
+    is_wide: Vec<bool>,
     count: Vec<u32>,
     fill: Vec<u32>,
     /// 1 / cell size of the last full search, 1/m.
@@ -39,6 +41,15 @@ const WIDE_BLOCK: usize = 512;
 
 /// Cell coordinates are clamped to this range, so that a neighbour (±k) never aliases a cell.
 const CELL_LIMIT: i64 = i32::MAX as i64 - 1024;
+
+/// [`each_around`] cuts the square to the disc for centres within this many cells of the
+/// origin (a kilometre for millimetre cells); a cell coordinate's rounding there is below
+/// 1e-9 cells.
+const DISC_CELLS: f64 = 1e6;
+
+/// How much wider than the reach [`each_around`]'s disc is, cells: far above the rounding of a
+/// centre's cell coordinate within [`DISC_CELLS`] and of the reach test.
+const DISC_SLACK_CELLS: f64 = 1e-6;
 
 fn cell_key(cx: i64, cy: i64) -> u64 {
     let offset = |c: i64| (c - i32::MIN as i64) as u64;
@@ -75,12 +86,31 @@ fn in_blocks(pool: bool, n: usize, block: usize, out: &mut Vec<u64>, find: impl 
     found.iter().for_each(|v| out.extend_from_slice(v));
 }
 
-/// Calls `each(b)` for every element b keyed in a cell (x, y) with |x − cx| ≤ k and |y − cy| ≤ k,
-/// row by row.
+/// Calls `each(b)` for every element b keyed in a cell the disc of radius `reach` cells about
+/// `t` (a centre in cell units: its coordinates times 1/cell) may overlap, row by row: the
+/// square of cells within ⌈reach⌉ of `(cx, cy)` (the centre's cell), each row cut to the
+/// columns the disc reaches in it: 14 cells of the square's 25 on average for a reach of 1.5
+/// cells, 18 for 1.8, whose elements the reach test would only turn away.
 #[inline(always)]
-fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), k: i64, mut each: impl FnMut(usize)) {
+fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), t: [f64; 2], reach: f64, mut each: impl FnMut(usize)) {
+    let k = reach.ceil() as i64;
+    // The slack (in cells) covers the rounding of the centres' cell coordinates and of the
+    // reach test, so that no pair the test takes is cut; far out (fragments that flew away,
+    // where cells may be clamped and a cell coordinate's rounding grows) the whole square.
+    let disc = t[0].abs().max(t[1].abs()) < DISC_CELLS;
+    let s = reach + DISC_SLACK_CELLS;
     for y in cy - k..=cy + k {
-        let (lo, hi) = (cell_key(cx - k, y), cell_key(cx + k, y));
+        let (mut x0, mut x1) = (cx - k, cx + k);
+        if disc {
+            let dy = (y as f64 - t[1]).max(t[1] - (y + 1) as f64).max(0.0);
+            if dy >= s {
+                continue;
+            }
+            let w = (s * s - dy * dy).sqrt();
+            x0 = x0.max((t[0] - w).floor() as i64);
+            x1 = x1.min((t[0] + w).floor() as i64);
+        }
+        let (lo, hi) = (cell_key(x0, y), cell_key(x1, y));
         let from = keys.partition_point(|&(kk, _)| kk < lo);
         let to = keys.partition_point(|&(kk, _)| kk <= hi);
         for &(_, b) in &keys[from..to] {
@@ -139,11 +169,16 @@ impl BroadPhase {
             k.0 = cell_key(cx, cy);
         }
         self.keyed.sort();
-        self.wide.extend((0..n).filter(|&e| r[e] + margin(e) > usual).map(|e| e as u32));
+        // Whether an element is wide is asked of every pair the usual pass looks at: once per
+        // element here, a flag, instead of its reach again at each pair.
+        self.is_wide.clear();
+        self.is_wide.extend((0..n).map(|e| r[e] + margin(e) > usual));
+        self.wide.extend((0..n as u32).filter(|&e| self.is_wide[e as usize]));
         self.pairs.clear();
         let keys = &self.keyed;
         let lower = |k: u64| keys.partition_point(|&(kk, _)| kk < k);
-        let is_wide = |e: usize| r[e] + margin(e) > usual;
+        let flags = &self.is_wide;
+        let is_wide = |e: usize| flags[e];
         let test = |a: usize, b: usize, ca: [f64; 2], pairs: &mut Vec<u64>| reach_test(a, b, ca, &centre, r, &margin, pairs);
         // Usual–usual pairs: forward half-stencil (rest of own cell and (cx+1, cy), then the
         // three cells above); two usual reaches never exceed one cell. The elements come in
@@ -192,8 +227,8 @@ impl BroadPhase {
             for &a in wide {
                 let a = a as usize;
                 let ca = centre(a);
-                let k = ((r[a] + margin(a) + widest) * inv).ceil() as i64;
-                each_around(keys, cell_of(ca), k, |b| {
+                let reach = (r[a] + margin(a) + widest) * inv;
+                each_around(keys, cell_of(ca), [ca[0] * inv, ca[1] * inv], reach, |b| {
                     if b != a && (!is_wide(b) || a < b) {
                         test(a, b, ca, pairs);
                     }
@@ -267,8 +302,8 @@ impl BroadPhase {
             for &a in movers {
                 let a = a as usize;
                 let ca = centre(a);
-                let k = ((r[a] + margin(a) + widest_m) * inv).ceil() as i64;
-                each_around(keys, cell_of(ca), k, |b| {
+                let reach = (r[a] + margin(a) + widest_m) * inv;
+                each_around(keys, cell_of(ca), [ca[0] * inv, ca[1] * inv], reach, |b| {
                     if b != a {
                         reach_test(a, b, ca, &centre, r, &margin, pairs);
                     }
@@ -349,6 +384,41 @@ mod tests {
         let mut union: Vec<(u32, u32)> = out.iter().copied().filter(|&(i, j)| !is_mover[i as usize] && !is_mover[j as usize]).chain(moved).collect();
         union.sort_unstable();
         assert_eq!(union, brute(&x, &y, &r, m));
+    }
+
+    #[test]
+    fn the_disc_cut_keeps_pairs_at_the_edge_of_reach() {
+        // A wide element with a ring of wide partners just inside their reach (and a second
+        // ring just outside), for centres all over a cell: the pairs the cells' disc keeps
+        // (`each_around`) are every pair the reach test takes, in the full search and in the
+        // movers' search. Two far anchors with the smallest margin set the usual reach.
+        let (r, wide_m, usual_m) = (0.004, 0.011, 0.0005);
+        let reach = 2.0 * (r + wide_m);
+        let angles = 64;
+        let mut rnd = uniform(99);
+        for _ in 0..24 {
+            let (cx, cy) = (0.3 + 0.05 * rnd(), -0.2 + 0.05 * rnd());
+            let (mut x, mut y) = (vec![cx, 50.0, 60.0], vec![cy, 50.0, 60.0]);
+            for (k, f) in (0..2 * angles).map(|k| (k, if k < angles { 1.0 - 1e-9 } else { 1.0 + 1e-9 })) {
+                let phi = std::f64::consts::TAU * (k % angles) as f64 / angles as f64 + 0.013;
+                x.push(cx + f * reach * phi.cos());
+                y.push(cy + f * reach * phi.sin());
+            }
+            let n = x.len();
+            let rs = vec![r; n];
+            let m = |e: usize| if e == 1 || e == 2 { usual_m } else { wide_m };
+            let mut bp = BroadPhase::default();
+            let mut out = vec![];
+            bp.pairs(|e| [x[e], y[e]], &rs, m, None, false, &mut out);
+            let expected = brute(&x, &y, &rs, m);
+            assert_eq!(out, expected);
+            assert!((1..=angles as u32 + 2).all(|j| j < 3 || out.contains(&(0, j))), "the inner ring is found");
+            let mut moved = vec![];
+            let mut is_mover = vec![false; n];
+            is_mover[0] = true;
+            bp.requery(&[0], &is_mover, |e| [x[e], y[e]], &rs, m, r + wide_m, false, &mut moved);
+            assert_eq!(moved, expected.iter().copied().filter(|&(i, _)| i == 0).collect::<Vec<_>>());
+        }
     }
 
     #[test]
