@@ -96,8 +96,9 @@ fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), t: [f64; 2], reach: f6
     let k = reach.ceil() as i64;
     // The slack (in cells) covers the rounding of the centres' cell coordinates and of the
     // reach test, so that no pair the test takes is cut; far out (fragments that flew away,
-    // where cells may be clamped and a cell coordinate's rounding grows) the whole square.
-    let disc = t[0].abs().max(t[1].abs()) < DISC_CELLS;
+    // where cells may be clamped and a cell coordinate's rounding grows) the whole square, as
+    // for a reach that is not a number (whose square is the own cell, as it always was).
+    let disc = reach.is_finite() && t[0].abs().max(t[1].abs()) < DISC_CELLS;
     let s = reach + DISC_SLACK_CELLS;
     for y in cy - k..=cy + k {
         let (mut x0, mut x1) = (cx - k, cx + k);
@@ -419,6 +420,21 @@ mod tests {
             bp.requery(&[0], &is_mover, |e| [x[e], y[e]], &rs, m, r + wide_m, false, &mut moved);
             assert_eq!(moved, expected.iter().copied().filter(|&(i, _)| i == 0).collect::<Vec<_>>());
         }
+    }
+
+    #[test]
+    fn regression_a_reach_that_is_not_a_number_visits_the_own_cell_as_before_the_disc_cut() {
+        // Cut to a disc of NaN radius, a row's columns came out reversed (from the own column
+        // to column 0): the own cell was lost, and with elements keyed between the two the key
+        // slice panicked. The square alone visits the own cell, as it did before the cut.
+        let mut keys: Vec<(u64, u32)> = [(5, 7, 0u32), (5, 7, 1), (6, 7, 2), (-3, 7, 3), (2, 7, 4)].iter().map(|&(x, y, e)| (cell_key(x, y), e)).collect();
+        keys.sort();
+        let mut seen = vec![];
+        each_around(&keys, (5, 7), [5.5, 7.5], f64::NAN, |b| seen.push(b));
+        assert_eq!(seen, vec![0, 1]);
+        seen.clear();
+        each_around(&keys, (5, 7), [5.5, 7.5], 0.4, |b| seen.push(b));
+        assert_eq!(seen, vec![0, 1], "a reach within the own cell: the own cell, not the square's (6, 7)");
     }
 
     #[test]
