@@ -87,10 +87,11 @@ fn in_blocks(pool: bool, n: usize, block: usize, out: &mut Vec<u64>, find: impl 
 }
 
 /// Calls `each(b)` for every element b keyed in a cell the disc of radius `reach` cells about
-/// `t` (a centre in cell units: its coordinates times 1/cell) may overlap, row by row: the
-/// square of cells within ⌈reach⌉ of `(cx, cy)` (the centre's cell), each row cut to the
-/// columns the disc reaches in it: 14 cells of the square's 25 on average for a reach of 1.5
-/// cells, 18 for 1.8, whose elements the reach test would only turn away.
+/// `t` (a centre in cell units: its coordinates times 1/cell) may overlap — the caller's reach
+/// bound, within which every partner its test can take lies —, row by row: the square of cells
+/// within ⌈reach⌉ of `(cx, cy)` (the centre's cell), each row cut to the columns the disc
+/// reaches in it (on average 14 of the square's 25 cells for a reach of 1.5 cells, 18 for 1.8).
+/// The elements of the other cells, which the reach test would only turn away, are not visited.
 #[inline(always)]
 fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), t: [f64; 2], reach: f64, mut each: impl FnMut(usize)) {
     let k = reach.ceil() as i64;
