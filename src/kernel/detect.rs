@@ -51,6 +51,12 @@ const DISC_CELLS: f64 = 1e6;
 /// centre's cell coordinate within [`DISC_CELLS`] and of the reach test.
 const DISC_SLACK_CELLS: f64 = 1e-6;
 
+/// The cell of a centre `c` [x m, y m] for cells of 1/`inv` m, its coordinates clamped.
+fn cell_of(c: [f64; 2], inv: f64) -> (i64, i64) {
+    let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
+    (clamp(c[0]), clamp(c[1]))
+}
+
 fn cell_key(cx: i64, cy: i64) -> u64 {
     let offset = |c: i64| (c - i32::MIN as i64) as u64;
     (offset(cy) << 32) | offset(cx)
@@ -86,14 +92,16 @@ fn in_blocks(pool: bool, n: usize, block: usize, out: &mut Vec<u64>, find: impl 
     found.iter().for_each(|v| out.extend_from_slice(v));
 }
 
-/// Calls `each(b)` for every element b keyed in a cell the disc of radius `reach` cells about
-/// `t` (a centre in cell units: its coordinates times 1/cell) may overlap — the caller's reach
-/// bound, within which every partner its test can take lies —, row by row: the square of cells
-/// within ⌈reach⌉ of `(cx, cy)` (the centre's cell), each row cut to the columns the disc
-/// reaches in it (on average 14 of the square's 25 cells for a reach of 1.5 cells, 18 for 1.8).
-/// The elements of the other cells, which the reach test would only turn away, are not visited.
+/// Calls `each(b)` for every element b keyed in a cell (of 1/`inv` m) the disc of radius
+/// `reach_m` about the centre `ca` [x m, y m] may overlap — the caller's reach bound, within
+/// which every partner its test can take lies —, row by row: the square of cells within
+/// ⌈reach⌉ of the centre's cell, each row cut to the columns the disc reaches in it (on average
+/// 14 of the square's 25 cells for a reach of 1.5 cells, 18 for 1.8). The elements of the other
+/// cells, which the reach test would only turn away, are not visited.
 #[inline(always)]
-fn each_around(keys: &[(u64, u32)], (cx, cy): (i64, i64), t: [f64; 2], reach: f64, mut each: impl FnMut(usize)) {
+fn each_around(keys: &[(u64, u32)], ca: [f64; 2], inv: f64, reach_m: f64, mut each: impl FnMut(usize)) {
+    // In cell units: the centre's cell, the centre and the reach.
+    let ((cx, cy), t, reach) = (cell_of(ca, inv), [ca[0] * inv, ca[1] * inv], reach_m * inv);
     let k = reach.ceil() as i64;
     // The slack (in cells) covers the rounding of the centres' cell coordinates and of the
     // reach test, so that no pair the test takes is cut; far out (fragments that flew away,
@@ -155,8 +163,6 @@ impl BroadPhase {
         let cell = 2.0 * usual;
         let inv = 1.0 / cell;
         self.inv_cell = inv;
-        let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
-        let cell_of = |c: [f64; 2]| (clamp(c[0]), clamp(c[1]));
         // Key the elements in the order of the last call: elements move little between
         // rebuilds, so the keys come nearly sorted and the (adaptive, stable) sort is cheap.
         // (key, element) pairs are distinct, so the order is the same whatever the sort.
@@ -167,7 +173,7 @@ impl BroadPhase {
         self.wide.clear();
         for k in self.keyed.iter_mut() {
             let e = k.1 as usize;
-            let (cx, cy) = cell_of(centre(e));
+            let (cx, cy) = cell_of(centre(e), inv);
             k.0 = cell_key(cx, cy);
         }
         self.keyed.sort();
@@ -222,15 +228,14 @@ impl BroadPhase {
         // Wide elements: every cell within their reach plus the widest one; a pair of two wide
         // elements is taken once, from the smaller index. In blocks on the pool too: in an
         // impact they can be a third of the elements or more (anything set moving faster than
-        // half its skin over the margin's look-ahead), each testing a 5 × 5 block of cells, and
-        // this loop was then most of a full search.
+        // half its skin over the margin's look-ahead), each testing the cells of a 5 × 5 block
+        // its reach disc overlaps, and this loop was then most of a full search.
         let widest = self.wide.iter().map(|&e| r[e as usize] + margin(e as usize)).fold(usual, f64::max);
         let wide_block = |wide: &[u32], pairs: &mut Vec<u64>| {
             for &a in wide {
                 let a = a as usize;
                 let ca = centre(a);
-                let reach = (r[a] + margin(a) + widest) * inv;
-                each_around(keys, cell_of(ca), [ca[0] * inv, ca[1] * inv], reach, |b| {
+                each_around(keys, ca, inv, r[a] + margin(a) + widest, |b| {
                     if b != a && (!is_wide(b) || a < b) {
                         test(a, b, ca, pairs);
                     }
@@ -279,13 +284,11 @@ impl BroadPhase {
     ) {
         out.clear();
         let inv = self.inv_cell;
-        let clamp = |v: f64| ((v * inv).floor() as i64).clamp(-CELL_LIMIT, CELL_LIMIT);
-        let cell_of = |c: [f64; 2]| (clamp(c[0]), clamp(c[1]));
         // The others keep their keys and their order: the movers' new keys, sorted apart, are
         // merged in (the (key, element) pairs are distinct, so the order is the full sort's).
         self.moved.clear();
         self.moved.extend(movers.iter().map(|&e| {
-            let (cx, cy) = cell_of(centre(e as usize));
+            let (cx, cy) = cell_of(centre(e as usize), inv);
             (cell_key(cx, cy), e)
         }));
         self.moved.sort_unstable();
@@ -304,8 +307,7 @@ impl BroadPhase {
             for &a in movers {
                 let a = a as usize;
                 let ca = centre(a);
-                let reach = (r[a] + margin(a) + widest_m) * inv;
-                each_around(keys, cell_of(ca), [ca[0] * inv, ca[1] * inv], reach, |b| {
+                each_around(keys, ca, inv, r[a] + margin(a) + widest_m, |b| {
                     if b != a {
                         reach_test(a, b, ca, &centre, r, &margin, pairs);
                     }
@@ -431,10 +433,10 @@ mod tests {
         let mut keys: Vec<(u64, u32)> = [(5, 7, 0u32), (5, 7, 1), (6, 7, 2), (-3, 7, 3), (2, 7, 4)].iter().map(|&(x, y, e)| (cell_key(x, y), e)).collect();
         keys.sort();
         let mut seen = vec![];
-        each_around(&keys, (5, 7), [5.5, 7.5], f64::NAN, |b| seen.push(b));
+        each_around(&keys, [5.5, 7.5], 1.0, f64::NAN, |b| seen.push(b));
         assert_eq!(seen, vec![0, 1]);
         seen.clear();
-        each_around(&keys, (5, 7), [5.5, 7.5], 0.4, |b| seen.push(b));
+        each_around(&keys, [5.5, 7.5], 1.0, 0.4, |b| seen.push(b));
         assert_eq!(seen, vec![0, 1], "a reach within the own cell: the own cell, not the square's (6, 7)");
     }
 
