@@ -176,8 +176,16 @@ impl Contacts {
         let with_extra = !self.extra.is_empty();
         let old = &self.list;
         let kept = |c: &Contact| c.bond == Bond::Intact || !covered(c.i, c.j) || touching(c);
-        let mut a = 0usize;
-        for b in 0..=pairs.len() {
+        let (mut a, mut b) = (0usize, 0usize);
+        loop {
+            // Candidates already in the list, as many in a row as the list has them (after a
+            // full search nearly every contact is one): kept with their history, copied whole.
+            let same = pairs[b..].iter().zip(&old[a..]).take_while(|&(&(i, j), c)| c.i == i && c.j == j).count();
+            self.merged.extend_from_slice(&old[a..a + same]);
+            if with_extra {
+                self.merged_extra.extend_from_slice(&self.extra[a..a + same]);
+            }
+            (a, b) = (a + same, b + same);
             let kb = pairs.get(b).map_or(u64::MAX, |&(i, j)| ((i as u64) << 32) | j as u64);
             // The old contacts before the candidate: kept as they are, in runs copied whole, or
             // dropped.
@@ -212,6 +220,7 @@ impl Contacts {
                     self.merged_extra.push(fresh_extra(i, j));
                 }
             }
+            b += 1;
         }
         std::mem::swap(&mut self.list, &mut self.merged);
         std::mem::swap(&mut self.extra, &mut self.merged_extra);
@@ -319,7 +328,10 @@ mod tests {
                 .collect();
             let extra: Vec<Extra> = keys.iter().map(|&(i, j)| Extra::new((i * 100 + j) as f64)).collect();
             let mut pairs: Vec<(u32, u32)> = (0..rnd(60)).map(|_| (rnd(n as u64) as u32, rnd(n as u64) as u32)).filter(|(i, j)| i < j).collect();
-            pairs.extend(keys.iter().filter(|_| rnd(4) == 0));
+            // Few of the old pairs among the candidates (a local update), or nearly all, in long
+            // runs (a full search).
+            let share = if round % 2 == 0 { 2 } else { 7 };
+            pairs.extend(keys.iter().filter(|_| rnd(8) < share));
             pairs.sort_unstable();
             pairs.dedup();
             let movers: Vec<bool> = (0..n).map(|_| rnd(3) == 0).collect();
