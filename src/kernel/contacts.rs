@@ -208,13 +208,10 @@ impl Contacts {
             }
             let Some(&(i, j)) = pairs.get(b) else { break };
             if old.get(a).is_some_and(|c| c.key() == kb) {
-                // A candidate already in the list: kept with its history.
-                self.merged.push(old[a]);
-                if with_extra {
-                    self.merged_extra.push(self.extra[a]);
-                }
-                a += 1;
-            } else if admit(i, j) {
+                // A candidate already in the list: the run above takes it, with any after it.
+                continue;
+            }
+            if admit(i, j) {
                 self.merged.push(fresh(i, j));
                 if with_extra {
                     self.merged_extra.push(fresh_extra(i, j));
