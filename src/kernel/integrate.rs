@@ -414,8 +414,10 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
     };
     assert_eq!(sums.len(), pos.len(), "the motion stage reads the contact sums stage 1 made");
     let chunks = pos.chunks_mut(CHUNK).zip(vel.chunks_mut(CHUNK)).zip(force.chunks_mut(CHUNK)).zip(partial.iter_mut()).zip(sums.chunks_mut(CHUNK)).enumerate();
+    // One chunk as the zip hands it out: its index, positions, velocities, forces, report, sums.
     type Rows<'r> = &'r mut [[f64; 3]];
-    let one = |(k, ((((ps, vs), fs), out), ss)): (usize, ((((Rows, Rows), Rows), &mut MotionReport), Rows))| *out = run(k, ps, vs, fs, ss);
+    type Chunk<'r> = (usize, ((((Rows<'r>, Rows<'r>), Rows<'r>), &'r mut MotionReport), Rows<'r>));
+    let one = |(k, ((((ps, vs), fs), out), ss)): Chunk<'_>| *out = run(k, ps, vs, fs, ss);
     match spans {
         Some(starts) => super::spans::run(chunks.collect(), starts, one),
         None => chunks.for_each(one),
