@@ -247,10 +247,17 @@ struct Split {
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Table {
     u0: f64,
-    values: Vec<Ratios>,
-    /// Per interval, the index of its split in `splits` (u32::MAX: none).
-    split_of: Vec<u32>,
+    nodes: Vec<Node>,
     splits: Vec<Split>,
+}
+
+/// A table node: the ratios there, and the split inside the interval that starts there. One
+/// array, so that a lookup checks one range for both ends of its interval and the split.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+struct Node {
+    ratios: Ratios,
+    /// Index of the interval's split in `splits` (u32::MAX: none; the last node's is never read).
+    split: u32,
 }
 
 impl Table {
@@ -261,8 +268,7 @@ impl Table {
         let u0 = pseudo_log2(TABLE_LOW_PER_S).floor();
         let u1 = pseudo_log2(high_per_s.max(2.0 * TABLE_LOW_PER_S)).ceil() + 1.0;
         let n = ((u1 - u0) * PER_OCTAVE) as usize + 1;
-        let values = (0..n).map(|k| f(pseudo_exp2(u0 + k as f64 / PER_OCTAVE))).collect();
-        let mut split_of = vec![u32::MAX; n - 1];
+        let mut nodes: Vec<Node> = (0..n).map(|k| Node { ratios: f(pseudo_exp2(u0 + k as f64 / PER_OCTAVE)), split: u32::MAX }).collect();
         let mut splits = Vec::new();
         for &x in kinks_per_s {
             if !(x > TABLE_LOW_PER_S && x.is_finite()) {
@@ -273,11 +279,11 @@ impl Table {
             if k + 1 >= n {
                 continue;
             }
-            assert!(split_of[k] == u32::MAX, "two kinks in one table interval at {x} s⁻¹");
-            split_of[k] = splits.len() as u32;
+            assert!(nodes[k].split == u32::MAX, "two kinks in one table interval at {x} s⁻¹");
+            nodes[k].split = splits.len() as u32;
             splits.push(Split { u, below: f(x), above: f(x * (1.0 + 1e-12)) });
         }
-        Table { u0, values, split_of, splits }
+        Table { u0, nodes, splits }
     }
 
     /// The ratios at `rate_per_s` (≥ 0), by linear interpolation; STATIC below the table, the
@@ -290,15 +296,16 @@ impl Table {
         }
         let u = pseudo_log2(rate_per_s);
         let s = (u - self.u0) * PER_OCTAVE;
-        let last = self.values.len() - 1;
-        if s >= last as f64 {
-            return self.values[last];
-        }
-        let k = s as usize;
-        let (mut a, mut b, mut w) = (&self.values[k], &self.values[k + 1], s - k as f64);
-        let split = self.split_of[k];
-        if split != u32::MAX {
-            let p = &self.splits[split as usize];
+        // s > 0 (u > pseudo_log2(TABLE_LOW_PER_S) ≥ u0), so ⌊s⌋ is the interval, and past the
+        // last node exactly when s ≥ the last index: the test in integers, with no float made
+        // of the table's length (the u32 is wide enough: a table has a few hundred nodes).
+        let k = s as u32 as usize;
+        let Some([node, next]) = self.nodes.get(k..k + 2) else {
+            return self.nodes[self.nodes.len() - 1].ratios;
+        };
+        let (mut a, mut b, mut w) = (&node.ratios, &next.ratios, s - k as f64);
+        if node.split != u32::MAX {
+            let p = &self.splits[node.split as usize];
             let (uk, uk1) = (self.u0 + k as f64 / PER_OCTAVE, self.u0 + (k + 1) as f64 / PER_OCTAVE);
             if u <= p.u {
                 if p.u == uk {
