@@ -332,13 +332,30 @@ pub fn interact<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g:
 /// plateau, the failure rule, dashpots; springs and strengths scaled by the rate part.
 #[inline(always)]
 pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
+    let ratios = bond_ratios::<P>(x, k, g);
+    bonded_at::<P>(c, x, k, g, ratios, dt_s, diss)
+}
+
+/// The rate part's ratios for a bond at `g` ([`rate::STATIC`] without it), its rates updated:
+/// [`bonded`]'s first step, which reads only the kinematics and the rates, apart so that the
+/// contact loop can take it a few contacts ahead of the rest (`forces`).
+#[inline(always)]
+pub fn bond_ratios<P: PartSet>(x: &mut Extra, k: &ContactClass, g: &Kinematics) -> rate::Ratios {
+    if P::RATE && k.rate.enabled {
+        k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(g.vn_mps, &mut x.vn_last_mps), 1.0 / x.length0_m)
+    } else {
+        rate::STATIC
+    }
+}
+
+/// [`bonded`] with its rate ratios already taken ([`bond_ratios`]).
+#[inline(always)]
+pub fn bonded_at<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, ratios: rate::Ratios, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
     let opening = g.d_m - c.rest_m;
     let slip = g.vt_mps * dt_s;
     let (mut kn, mut kt) = (k.bond.kn_n_per_m, k.bond.kt_n_per_m);
-    let mut ratios = rate::STATIC;
     let (mut kn_last, mut kt_last) = (kn, kt);
     if P::RATE && k.rate.enabled {
-        ratios = k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(g.vn_mps, &mut x.vn_last_mps), 1.0 / x.length0_m);
         let ratio = if opening - c.dp_m < 0.0 { ratios[0] } else { ratios[1] };
         (kn_last, kt_last) = (kn * x.modulus_ratio, kt * x.modulus_ratio);
         x.modulus_ratio = ratio;
