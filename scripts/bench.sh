@@ -21,7 +21,10 @@
 #      in parallel the finest level borrows the core the coarse ones free, and its wall_s is then
 #      not one core's. Per event is printed too but is not an exponent of the kernel: the levels'
 #      events end at different simulated times (level 0 scabs and runs to the time cap, the
-#      others rebound).
+#      others rebound);
+#   5. with FULL=1 or PEERS_BENCH=1: the peers side by side (scripts/bench_peers.sh: LAMMPS 2025
+#      bpm/rotational and bpm/spring, LAMMPS 2022, ESyS-Particle and YADE on the peers' beam,
+#      alternating with demsweep; installs what is missing; about 5 minutes a round).
 # Timings on this machine vary by ±20 % from minute to minute: compare ratios from one run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -93,5 +96,10 @@ def slope(x, y):
 print(f"cost per step ~ N^{slope(n, per_step):.2f} (expected 1), per simulated ms ~ N^{slope(n, per_ms):.2f} (expected 1.5);"
       f" per event ~ N^{slope(n, per_event):.2f} (events of different length: not the kernel's exponent)")
 PY
+fi
+if [ "${FULL:-0}" = 1 ] || [ "${PEERS_BENCH:-0}" = 1 ]; then
+    echo
+    echo "== 5. the peers on their beam-impact workload, one core each, $repeats rounds (scripts/bench_peers.sh)"
+    DEMSWEEP_BIN="$bin" REPEATS="$repeats" bash scripts/bench_peers.sh
 fi
 echo "(runs in $work)"
