@@ -80,12 +80,9 @@ run_peer() { # run_peer NAME ROUND -> prints ms per step
         lammps2022)
             bash "$work/lammps/run.sh" 1 "$nsteps" "r$k" > "$work/lammps-$k.log"
             awk -v n="$nsteps" '/^Loop time of/ {print $4 / n * 1e3}' "$work/lammps/runs/r$k/out.txt" ;;
-        esys)
-            bash "$work/esys/run.sh" 1 "$nsteps" "r$k" > "$work/esys-$k.log"
-            grep -o 'us_per_step=[0-9.e+-]*' "$work/esys/runs/r$k/log.txt" | awk -F= '{print $2 / 1e3}' ;;
-        yade)
-            bash "$work/yade/run.sh" 1 "$nsteps" "r$k" > "$work/yade-$k.log"
-            grep -o 'us_per_step=[0-9.e+-]*' "$work/yade/runs/r$k/log.txt" | awk -F= '{print $2 / 1e3}' ;;
+        esys|yade) # the same run.sh arguments and log line in both peers' folders
+            bash "$work/$p/run.sh" 1 "$nsteps" "r$k" > "$work/$p-$k.log"
+            grep -o 'us_per_step=[0-9.e+-]*' "$work/$p/runs/r$k/log.txt" | awk -F= '{print $2 / 1e3}' ;;
     esac
 }
 for k in $(seq 1 "$repeats"); do
@@ -99,7 +96,7 @@ for k in $(seq 1 "$repeats"); do
     steps=$(awk -F, 'NR==1 {for (i=1;i<=NF;i++) if ($i=="steps") c=i} NR==2 {print $c}' "$work/ds-$k"/*/summary.csv)
     echo "demsweep $(python3 -c "print(float('$wall') / float('$steps') * 1e3)")" >> "$results"
 done
-python3 - "$results" "$nbonds" "$repeats" <<'PY'
+python3 - "$results" "$nbonds" <<'PY'
 import statistics, sys
 runs, order = {}, []
 for line in open(sys.argv[1]):
@@ -107,7 +104,7 @@ for line in open(sys.argv[1]):
     if name not in runs:
         order.append(name)
     runs.setdefault(name, []).append(float(ms))
-nb, particles, rounds = int(sys.argv[2]), 13565, int(sys.argv[3])
+nb, particles = int(sys.argv[2]), 13565
 ours = statistics.median(runs["demsweep"])
 label = {"bpm-rot": "LAMMPS 2025 bpm/rotational", "bpm-spring": "LAMMPS 2025 bpm/spring",
          "lammps2022": "LAMMPS 2022 (Debian)", "esys": "ESyS-Particle 2.3.5", "yade": "YADE 2023.02a"}
