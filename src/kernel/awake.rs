@@ -1,7 +1,7 @@
 //! The pool's other workers kept looking for work while one worker runs a batch of steps.
 //!
-//! Between the parallel stages of a step (while one thread adds the pieces' records, or does the
-//! serial parts of a neighbour update) an idle rayon worker goes to sleep after a few rounds of
+//! Between the parallel stages of a step (while one thread does the serial parts of a neighbour
+//! update, say) an idle rayon worker goes to sleep after a few rounds of
 //! looking, and each stage then waits for the system to wake it: 20–50 µs on the level-2
 //! penetration event, twice a step. Here each other worker runs a job that looks for work in a
 //! loop until the batch returns, so it takes a stage's jobs as soon as they are pushed; its

@@ -162,13 +162,14 @@ pub struct Pieces<'a> {
     pub cuts: &'a [usize],
     /// Each thread's span of pieces: span s is pieces `spans[s]..spans[s + 1]`.
     pub spans: &'a [usize],
-    /// Each piece's records (scratch space).
-    pub records: &'a mut Vec<Vec<pieces::Record>>,
+    /// Each piece's records (scratch space; output: the motion stage adds them,
+    /// `pieces::fix_up_chunk`).
+    pub records: &'a mut Vec<pieces::Kept>,
 }
 
 /// Several threads: the pieces (whole chunks) scatter their forces (`pieces`), each thread
-/// taking its span's (`spans`), then the records are added in order (`pieces::fix_up_on_pool`:
-/// each thread its part of the elements, from `pieces::POOL_RECORDS` records a step).
+/// taking its span's (`spans`). The sums are whole only once the records are added too
+/// (`pieces::fix_up_chunk`, by the motion stage).
 #[inline(never)]
 fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     at: &StepInput<'_>,
@@ -180,7 +181,8 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
 ) {
     assert!(cuts.iter().rev().skip(1).all(|c| c.is_multiple_of(CHUNK)), "pieces of whole chunks: the dissipation is summed per chunk");
     assert!(cuts.last() == Some(&list.len()) && ranges.len() + 1 == cuts.len(), "a plan for another list");
-    records.resize_with(ranges.len(), Vec::new);
+    records.resize_with(ranges.len(), pieces::Kept::default);
+    let n_elements = sums.len();
     let own = ranges.iter().map(|r| r.start as usize..r.end as usize);
     let mine = pieces::split(&mut *sums, own);
     let n = ranges.len();
@@ -192,7 +194,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
         .zip(records.iter_mut().zip(mine).zip(ranges))
         .collect();
     spans::run(jobs, starts, |((((cs, fs), ds), xs), ((rs, s), r))| {
-        let out = pieces::PieceSums::new(s, r.start, rs);
+        let out = pieces::PieceSums::new(s, r.start, rs, n_elements);
         #[cfg(target_arch = "x86_64")]
         if FOUR {
             // SAFETY: FOUR is set only when the processor has AVX.
@@ -200,7 +202,6 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
         }
         scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
     });
-    pieces::fix_up_on_pool(sums, records);
 }
 
 /// Each contact's force added to its two elements by `out` as it goes (and stored in `force`

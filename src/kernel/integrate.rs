@@ -169,6 +169,9 @@ pub struct Motion<'a> {
     /// The contact forces summed per element by stage 1 (zeroed here as they are read, ready
     /// for the next step).
     pub sums: &'a mut [[f64; 3]],
+    /// On the pool: the records of stage 1's pieces, still to be added to `sums`, each chunk's
+    /// just before it is moved (`pieces::fix_up_chunk`). Empty on one thread.
+    pub records: &'a [super::pieces::Kept],
     /// Positions at the last neighbour update, m.
     pub rebuild_pos: &'a [[f64; 2]],
     /// Neighbour margins, m.
@@ -299,12 +302,15 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, sums, rebuild_pos, margin_m, drive, p, partial, spans } = m;
+    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
     let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]], ss: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
+        if !records.is_empty() {
+            super::pieces::fix_up_chunk(ss, k, records);
+        }
         // The chunk's slices of every per-element array, all of its length: no bounds checks
         // in the loop.
         let (base, n) = (k * CHUNK, ps.len());

@@ -102,8 +102,9 @@ struct Scratch {
     /// Per-element contact force sums of stage 1: zero between steps (the motion stage zeroes
     /// each entry as it reads it, sparing a pass that clears them).
     contact_sums: Vec<[f64; 3]>,
-    /// The pieces' records of the scatter on the pool (`pieces`).
-    records: Vec<Vec<pieces::Record>>,
+    /// The pieces' records of the scatter on the pool (`pieces`): made by the contact stage,
+    /// added to `contact_sums` by the motion stage.
+    records: Vec<pieces::Kept>,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
     /// The motion stage's spans of chunks on the pool (`integrate::Motion::spans`).
@@ -291,6 +292,8 @@ impl Model {
             vel: &mut st.vel,
             force: &mut st.force,
             sums: &mut s.contact_sums[..],
+            // Only the step's contact stage on the pool made records.
+            records: if parallel { &s.records[..] } else { &[] },
             rebuild_pos: &st.rebuild_pos,
             margin_m: &st.margin_m,
             drive,

@@ -1,9 +1,11 @@
 //! The contact stage's scatter on the pool, in the one-thread order. The contact list is cut
 //! into pieces of whole chunks, and each piece is given a range of elements that it is the
 //! first piece to touch ([`plan`]); it adds its forces straight into the sums of its range and
-//! keeps every other contribution, in contact order, as a [`Record`]. When all pieces are done
-//! the records are added piece by piece ([`fix_up`]). An element's sum is then formed from zero
-//! in increasing contact order, as the one-thread scatter forms it, so the bits are the same for
+//! keeps every other contribution, in contact order, as a [`Record`], filed by the motion
+//! stage's chunk of its element ([`Kept`]). When all pieces are done the records are added
+//! piece by piece ([`fix_up`]; in a step, by the motion stage, each chunk's records just before
+//! it moves that chunk: [`fix_up_chunk`]). An element's sum is then formed from zero in
+//! increasing contact order, as the one-thread scatter forms it, so the bits are the same for
 //! any number of pieces or threads. An element outside every range (a projectile's element that
 //! pieces far apart touch) is made by the fix-up alone, from zero, in the same order.
 //!
@@ -14,8 +16,6 @@
 //! Why not a gather: summing each element's forces over its adjacency after the stage reads
 //! every force twice through a scattered index (2.4× the one-thread motion stage on the
 //! level-2 penetration event, the largest part of why two threads were 1.52× one).
-
-use rayon::prelude::*;
 
 use super::contacts::{Contact, ContactForce};
 use super::forces::Sums;
@@ -85,6 +85,50 @@ pub struct Record {
     pub e: u32,
     /// What to add: [Fx N, Fy N, T N·m].
     pub add: [f64; 3],
+}
+
+/// Elements per chunk of the motion stage (`integrate::CHUNK`), by which records are filed.
+const MOTION_CHUNK: usize = super::integrate::CHUNK;
+
+/// One piece's records, filed by the motion stage's chunk of their element, each chunk's in
+/// contact order (scratch space, kept from step to step).
+///
+/// Why filed: the records used to be added in a pass of their own after the contact stage, on
+/// the pool, each thread reading every record for the ones of its half of the elements (the
+/// level-2 penetration event on two threads: ~22 000 records a step, 1.6 % of the two cores'
+/// samples under perf, and a fork and join a step). Filed by chunk, each chunk's records are
+/// added by the motion stage's job for that chunk, which reads that chunk's sums next anyway.
+#[derive(Debug, Clone, Default)]
+pub struct Kept {
+    by_chunk: Vec<Vec<Record>>,
+}
+
+impl Kept {
+    /// Empty, with a bucket for each motion chunk of `n_elements` elements.
+    fn reset(&mut self, n_elements: usize) {
+        self.by_chunk.resize_with(n_elements.div_ceil(MOTION_CHUNK), Vec::new);
+        self.by_chunk.iter_mut().for_each(Vec::clear);
+    }
+
+    /// The records for elements of motion chunk `k`, in contact order.
+    pub fn chunk(&self, k: usize) -> &[Record] {
+        &self.by_chunk[k]
+    }
+
+    /// How many records there are.
+    pub fn len(&self) -> usize {
+        self.by_chunk.iter().map(Vec::len).sum()
+    }
+
+    /// True when there are none.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Every record, chunk by chunk (for each element, in contact order).
+    pub fn iter(&self) -> impl Iterator<Item = &Record> {
+        self.by_chunk.iter().flatten()
+    }
 }
 
 /// For the pieces cut at `cuts` (see [`cuts`]), the range of elements each piece writes
@@ -157,7 +201,7 @@ pub struct PieceSums<'a> {
     /// The sums of the range, element `lo` first.
     sums: &'a mut [[f64; 3]],
     lo: u32,
-    records: &'a mut Vec<Record>,
+    records: &'a mut Kept,
     /// The element whose i-contributions are being summed in `acc` (contacts are sorted by i),
     /// and whether it is in the range.
     run_i: u32,
@@ -166,9 +210,10 @@ pub struct PieceSums<'a> {
 }
 
 impl<'a> PieceSums<'a> {
-    /// The piece whose range starts at element `lo`, with its sums; `records` is cleared.
-    pub fn new(sums: &'a mut [[f64; 3]], lo: u32, records: &'a mut Vec<Record>) -> Self {
-        records.clear();
+    /// The piece whose range starts at element `lo`, with its sums; `records` is emptied and
+    /// given a bucket per motion chunk of `n_elements` elements.
+    pub fn new(sums: &'a mut [[f64; 3]], lo: u32, records: &'a mut Kept, n_elements: usize) -> Self {
+        records.reset(n_elements);
         PieceSums { sums, lo, records, run_i: u32::MAX, own_i: false, acc: [0.0; 3] }
     }
 
@@ -189,8 +234,8 @@ impl<'a> PieceSums<'a> {
 /// Out of line: the law's loop keeps its registers.
 #[cold]
 #[inline(never)]
-fn keep(records: &mut Vec<Record>, e: u32, add: [f64; 3]) {
-    records.push(Record { e, add });
+fn keep(records: &mut Kept, e: u32, add: [f64; 3]) {
+    records.by_chunk[e as usize / MOTION_CHUNK].push(Record { e, add });
 }
 
 impl Sums for PieceSums<'_> {
@@ -229,54 +274,31 @@ impl Sums for PieceSums<'_> {
 }
 
 /// Add every piece's records to the sums, piece by piece, each in its contact order (the
-/// reference for [`fix_up_on_pool`]).
-pub fn fix_up(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
-    // Indexed, not looked up as the parts are: a record for an element that does not exist is
-    // a bug of the plan, and stops here.
-    for r in records.iter().flatten() {
-        let s = &mut sums[r.e as usize];
-        s[0] += r.add[0];
-        s[1] += r.add[1];
-        s[2] += r.add[2];
+/// reference for [`fix_up_chunk`]).
+pub fn fix_up(sums: &mut [[f64; 3]], records: &[Kept]) {
+    // Indexed, not looked up as the chunk's are: a record for an element that does not exist
+    // is a bug of the plan, and stops here.
+    for r in records.iter().flat_map(Kept::iter) {
+        add(&mut sums[r.e as usize], r);
     }
 }
 
-/// Records per step from which [`fix_up_on_pool`] uses the pool: below, the fork and join
-/// cost more than half the adding saves (the peers' beam on two threads, ~4 900 records a
-/// step: its contact stage 1.05–1.08× the time on the pool, five runs; the level-2 event,
-/// ~25 000: 0.985–0.994×).
-pub const POOL_RECORDS: usize = 16_384;
-
-/// [`fix_up`] on the pool: the sums cut into one part of elements per thread, each part
-/// adding the records that fall in it, all of them in the same order as [`fix_up`], so each
-/// element's sum is the same to the bit. Every part reads every record (the level-2 event on
-/// two threads: ~25 000 records, 0.8 MB, per step), but adds only its own: the contact stage
-/// 0.985–0.994× the time of the serial fix-up (steps of one run alternately, three runs:
-/// within what alternate steps differ by on two threads with the same code, README). Serial
-/// below [`POOL_RECORDS`] records.
-pub fn fix_up_on_pool(sums: &mut [[f64; 3]], records: &[Vec<Record>]) {
-    fix_up_in_parts(sums, records, POOL_RECORDS);
+/// The records of motion chunk `k` added to its sums `sums` (element `k × CHUNK` first), piece
+/// by piece, each in its contact order: what [`fix_up`] adds to these elements, in its order,
+/// so the same bits. Called by the motion stage's job for the chunk, whichever thread runs it.
+#[inline]
+pub fn fix_up_chunk(sums: &mut [[f64; 3]], k: usize, records: &[Kept]) {
+    let first = k * MOTION_CHUNK;
+    for r in records.iter().flat_map(|kept| kept.chunk(k)) {
+        add(&mut sums[r.e as usize - first], r);
+    }
 }
 
-/// [`fix_up_on_pool`] on the pool from `pool_from` records.
-fn fix_up_in_parts(sums: &mut [[f64; 3]], records: &[Vec<Record>], pool_from: usize) {
-    let parts = rayon::current_num_threads();
-    if parts < 2 || records.iter().map(Vec::len).sum::<usize>() < pool_from {
-        return fix_up(sums, records);
-    }
-    let part = sums.len().div_ceil(parts).max(1);
-    sums.par_chunks_mut(part).enumerate().for_each(|(k, s)| fix_up_part(s, k * part, records));
-}
-
-/// The records for elements `first..first + sums.len()` added to `sums` (element `first` first).
-fn fix_up_part(sums: &mut [[f64; 3]], first: usize, records: &[Vec<Record>]) {
-    for r in records.iter().flatten() {
-        if let Some(s) = sums.get_mut((r.e as usize).wrapping_sub(first)) {
-            s[0] += r.add[0];
-            s[1] += r.add[1];
-            s[2] += r.add[2];
-        }
-    }
+#[inline(always)]
+fn add(s: &mut [f64; 3], r: &Record) {
+    s[0] += r.add[0];
+    s[1] += r.add[1];
+    s[2] += r.add[2];
 }
 
 #[cfg(test)]
@@ -329,22 +351,22 @@ mod tests {
     fn pieced(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, usize) {
         let (mut sums, records) = unfixed(list, n, cuts, order);
         fix_up(&mut sums, &records);
-        (sums, records.iter().map(Vec::len).sum())
+        (sums, records.iter().map(Kept::len).sum())
     }
 
     /// The pieces' sums and records before the fix-up, the pieces run in `order`.
-    fn unfixed(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, Vec<Vec<Record>>) {
+    fn unfixed(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, Vec<Kept>) {
         let (mut first, mut ranges) = (Vec::new(), Vec::new());
         plan(list, cuts, n, &mut first, &mut ranges);
         let mut sums = vec![[0.0; 3]; n];
-        let mut records = vec![Vec::new(); ranges.len()];
+        let mut records = vec![Kept::default(); ranges.len()];
         {
             let own = ranges.iter().map(|r| r.start as usize..r.end as usize);
             let mut mine: Vec<Option<&mut [[f64; 3]]>> = split(&mut sums, own).into_iter().map(Some).collect();
-            let mut kept: Vec<Option<&mut Vec<Record>>> = records.iter_mut().map(Some).collect();
+            let mut kept: Vec<Option<&mut Kept>> = records.iter_mut().map(Some).collect();
             // The pieces in any order: as the pool may run them.
             for &p in order {
-                let mut s = PieceSums::new(mine[p].take().unwrap(), ranges[p].start, kept[p].take().unwrap());
+                let mut s = PieceSums::new(mine[p].take().unwrap(), ranges[p].start, kept[p].take().unwrap(), n);
                 for (k, c) in list.iter().enumerate().take(cuts[p + 1]).skip(cuts[p]) {
                     s.add(c, &force(k));
                 }
@@ -384,23 +406,29 @@ mod tests {
     }
 
     #[test]
-    fn the_fix_up_on_the_pool_gives_the_serial_fix_up_bit_for_bit_on_any_pool_size() {
-        let n = 400;
+    fn the_fix_up_chunk_by_chunk_gives_the_whole_fix_up_bit_for_bit() {
+        // Elements over several motion chunks, the last one short: a lattice whose rows are a
+        // chunk long and a half, partners far along the numbering.
+        let n = 3 * MOTION_CHUNK + MOTION_CHUNK / 3;
         let l = list(n as u32);
-        let cuts = even(&l, 64);
+        let cuts = even(&l, 700);
         let (sums, records) = unfixed(&l, n, &cuts, &(0..cuts.len() - 1).collect::<Vec<_>>());
-        let kept: usize = records.iter().map(Vec::len).sum();
-        assert!(kept > 100, "only {kept} records: too few to test the parts' boundaries");
+        let chunks = n.div_ceil(MOTION_CHUNK);
+        for k in 0..chunks {
+            let here = records.iter().map(|r| r.chunk(k).len()).sum::<usize>();
+            assert!(here > 10, "chunk {k} has only {here} records: too few to test its boundaries");
+            assert!(records.iter().flat_map(|r| r.chunk(k)).all(|r| r.e as usize / MOTION_CHUNK == k), "chunk {k} holds another's record");
+        }
         let mut want = sums.clone();
         fix_up(&mut want, &records);
         assert!(bits(&want) != bits(&sums), "the records changed nothing");
-        for threads in [1, 2, 3, 8] {
-            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-            let mut got = sums.clone();
-            // From any number of records: the default's threshold would keep these few serial.
-            pool.install(|| fix_up_in_parts(&mut got, &records, 0));
-            assert!(bits(&got) == bits(&want), "{threads} threads: the sums differ from the serial fix-up's");
+        let mut got = sums.clone();
+        // In any order of the chunks, as the motion stage's threads may take them.
+        for k in (0..chunks).rev() {
+            let lo = k * MOTION_CHUNK;
+            fix_up_chunk(&mut got[lo..(lo + MOTION_CHUNK).min(n)], k, &records);
         }
+        assert!(bits(&got) == bits(&want), "chunk by chunk the sums differ from the whole fix-up's");
     }
 
     /// Piece lengths in chunks, span by span.
