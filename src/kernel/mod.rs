@@ -453,7 +453,7 @@ impl Model {
         s.broad.requery(&s.movers, &s.is_mover, |e| refs[e], r, |e| margin[e], widest, pool, &mut s.pairs);
         let is_mover = &s.is_mover;
         let covered = |i: u32, j: u32| is_mover[i as usize] || is_mover[j as usize];
-        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, self.record_contact_forces, &mut st.contacts, &mut st.ledger);
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, self.record_contact_forces, pool, &mut st.contacts, &mut st.ledger);
         st.local_updates += 1;
     }
 
@@ -465,7 +465,7 @@ impl Model {
         let (pos, margin) = (&st.pos, &st.margin_m);
         let usual = self.neighbours.usual_reach_m(self.el.radius.iter().copied().fold(0.0, f64::max));
         s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], Some(usual), pool, &mut s.pairs);
-        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, self.record_contact_forces, &mut st.contacts, &mut st.ledger);
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, self.record_contact_forces, pool, &mut st.contacts, &mut st.ledger);
         st.rebuild_pos.clear();
         st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
         st.rebuilds += 1;
@@ -504,8 +504,8 @@ impl Model {
         Ok(())
     }
 
-    /// Merge the candidate `pairs` (complete for the `covered` pairs) into the contacts; with
-    /// `record` (`Model::record_contact_forces`) their stored forces, no longer those of the
+    /// Merge the candidate `pairs` (complete for the `covered` pairs) into the contacts (with
+    /// `pool`, on rayon's pool); with `record` (`Model::record_contact_forces`) their stored forces, no longer those of the
     /// list's entries, are zeroed.
     #[allow(clippy::too_many_arguments)]
     fn merge(
@@ -514,8 +514,9 @@ impl Model {
         kinds: usize,
         pos: &[[f64; 3]],
         pairs: &[(u32, u32)],
-        covered: impl Fn(u32, u32) -> bool,
+        covered: impl Fn(u32, u32) -> bool + Sync,
         record: bool,
+        pool: bool,
         contacts: &mut contacts::Contacts,
         ledger: &mut energy::Ledger,
     ) {
@@ -532,7 +533,7 @@ impl Model {
         let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
         let release = |c: &contacts::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
         let mut released = Dissipation::default();
-        contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, el.len());
+        contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, el.len(), pool);
         if record {
             contacts.force.fill(contacts::ContactForce::default());
         }
