@@ -93,9 +93,9 @@ pub struct Contacts {
     /// The pieces' spans, one per thread: span s is pieces `piece_spans[s]..piece_spans[s + 1]`.
     #[serde(skip)]
     pub piece_spans: Vec<usize>,
-    /// Scratch of the plan: each element's first piece.
+    /// Scratch of the plan.
     #[serde(skip)]
-    first_piece: Vec<u32>,
+    plan_scratch: super::pieces::PlanScratch,
     /// The threads and the longest piece, contacts, the cuts are made for (None: no plan).
     #[serde(skip)]
     pub piece_rule: Option<(usize, usize)>,
@@ -129,31 +129,33 @@ impl Contacts {
     /// After the list changed: the forces sized to it (new entries zero; the others are left
     /// as they are, since a run that does not record them never writes them — zeroing every
     /// entry at every merge was 0.4 % of the level-2 penetration event), and the plan of the
-    /// scatter, if one is kept, made again.
-    pub fn refresh(&mut self, n_elements: usize) {
+    /// scatter, if one is kept, made again (with `pool`, on rayon's pool).
+    pub fn refresh(&mut self, n_elements: usize, pool: bool) {
         self.force.resize(self.list.len(), ContactForce::default());
-        self.replan(n_elements);
+        if self.piece_rule.is_some() {
+            self.plan(n_elements, pool);
+        }
     }
 
     /// The plan of the scatter made again, if one is kept (the forces are kept: a restored
     /// checkpoint).
     pub fn replan(&mut self, n_elements: usize) {
         if self.piece_rule.is_some() {
-            self.plan(n_elements);
+            self.plan(n_elements, false);
         }
     }
 
-    /// Plan the scatter on `threads` threads in pieces of `most` contacts at most (kept up with
-    /// the list from now on, by every [`Contacts::refresh`]).
+    /// Plan the scatter on `threads` threads of rayon's pool in pieces of `most` contacts at
+    /// most (kept up with the list from now on, by every [`Contacts::refresh`]).
     pub fn plan_pieces(&mut self, threads: usize, most: usize, n_elements: usize) {
         self.piece_rule = Some((threads, most));
-        self.plan(n_elements);
+        self.plan(n_elements, true);
     }
 
-    fn plan(&mut self, n_elements: usize) {
+    fn plan(&mut self, n_elements: usize, pool: bool) {
         let (threads, most) = self.piece_rule.expect("a rule to plan by");
         super::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
-        super::pieces::plan(&self.list, &self.piece_cuts, n_elements, &mut self.first_piece, &mut self.piece_ranges);
+        super::pieces::plan(&self.list, &self.piece_cuts, n_elements, pool, &mut self.plan_scratch, &mut self.piece_ranges);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's
@@ -225,7 +227,7 @@ impl Contacts {
         }
         std::mem::swap(&mut self.list, &mut self.merged);
         std::mem::swap(&mut self.extra, &mut self.merged_extra);
-        self.refresh(n_elements);
+        self.refresh(n_elements, pool);
     }
 }
 

@@ -131,24 +131,43 @@ impl Kept {
     }
 }
 
+/// Scratch space of [`plan`]: each element's first piece, and the later half's on the pool.
+#[derive(Debug, Clone, Default)]
+pub struct PlanScratch {
+    first: Vec<u32>,
+    later: Vec<u32>,
+}
+
 /// For the pieces cut at `cuts` (see [`cuts`]), the range of elements each piece writes
 /// straight into, written to `out` (one per piece): elements that piece is the first to touch,
-/// the ranges disjoint and increasing. `first` is scratch space.
-pub fn plan(list: &[Contact], cuts: &[usize], n_elements: usize, first: &mut Vec<u32>, out: &mut Vec<std::ops::Range<u32>>) {
+/// the ranges disjoint and increasing. With `pool`, the pieces' first touches are found in two
+/// halves on rayon's pool (the same plan: one pass over the list, 0.8 ms a merge serial on
+/// the level-2 penetration event).
+pub fn plan(list: &[Contact], cuts: &[usize], n_elements: usize, pool: bool, scratch: &mut PlanScratch, out: &mut Vec<std::ops::Range<u32>>) {
     assert_eq!(cuts.last(), Some(&list.len()), "cuts for another list");
-    first.clear();
-    first.resize(n_elements, u32::MAX);
-    for (p, w) in cuts.windows(2).enumerate() {
-        for c in &list[w[0]..w[1]] {
-            for e in [c.i, c.j] {
-                let f = &mut first[e as usize];
-                *f = (*f).min(p as u32);
+    let n_pieces = cuts.len() - 1;
+    let PlanScratch { first, later } = scratch;
+    let touch = |pieces: std::ops::Range<usize>, first: &mut Vec<u32>| {
+        first.clear();
+        first.resize(n_elements, u32::MAX);
+        for p in pieces {
+            for c in &list[cuts[p]..cuts[p + 1]] {
+                for e in [c.i, c.j] {
+                    let f = &mut first[e as usize];
+                    *f = (*f).min(p as u32);
+                }
             }
         }
+    };
+    if pool && n_pieces > 1 {
+        let mid = n_pieces / 2;
+        rayon::join(|| touch(0..mid, first), || touch(mid..n_pieces, later));
+        first.iter_mut().zip(later.iter()).for_each(|(f, &l)| *f = (*f).min(l));
+    } else {
+        touch(0..n_pieces, first);
     }
     // Each piece's longest run of elements it touches first; elements no contact touches
     // (u32::MAX: held supports, say) join any run, since nothing is added to them.
-    let n_pieces = cuts.len() - 1;
     out.clear();
     out.resize(n_pieces, 0..0);
     let (mut start, mut cur) = (0, u32::MAX);
@@ -356,8 +375,8 @@ mod tests {
 
     /// The pieces' sums and records before the fix-up, the pieces run in `order`.
     fn unfixed(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, Vec<Kept>) {
-        let (mut first, mut ranges) = (Vec::new(), Vec::new());
-        plan(list, cuts, n, &mut first, &mut ranges);
+        let (mut scratch, mut ranges) = (PlanScratch::default(), Vec::new());
+        plan(list, cuts, n, false, &mut scratch, &mut ranges);
         let mut sums = vec![[0.0; 3]; n];
         let mut records = vec![Kept::default(); ranges.len()];
         {
@@ -474,8 +493,18 @@ mod tests {
     fn each_range_holds_only_elements_its_piece_touches_first_and_the_ranges_do_not_overlap() {
         let n = 400;
         let l = list(n as u32);
-        let (mut first, mut ranges) = (Vec::new(), Vec::new());
-        plan(&l, &even(&l, 64), n, &mut first, &mut ranges);
+        let (mut scratch, mut ranges) = (PlanScratch::default(), Vec::new());
+        plan(&l, &even(&l, 64), n, false, &mut scratch, &mut ranges);
+        // On the pool, the same plan.
+        for threads in [1, 2, 3] {
+            let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+            for cuts in [even(&l, 64), even(&l, 5), even(&l, l.len())] {
+                let (mut want, mut got) = (Vec::new(), Vec::new());
+                plan(&l, &cuts, n, false, &mut scratch, &mut want);
+                pool.install(|| plan(&l, &cuts, n, true, &mut PlanScratch::default(), &mut got));
+                assert_eq!(got, want, "{threads} threads, {} pieces: the plan on the pool differs", cuts.len() - 1);
+            }
+        }
         let mut end = 0;
         for (p, r) in ranges.iter().enumerate() {
             assert!(r.start >= end, "range {p} {r:?} overlaps the one before (ending at {end})");
