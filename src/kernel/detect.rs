@@ -171,12 +171,17 @@ impl BroadPhase {
             self.keyed.extend((0..n as u32).map(|e| (0, e)));
         }
         self.wide.clear();
-        for k in self.keyed.iter_mut() {
-            let e = k.1 as usize;
-            let (cx, cy) = cell_of(centre(e), inv);
+        let key = |k: &mut (u64, u32)| {
+            let (cx, cy) = cell_of(centre(k.1 as usize), inv);
             k.0 = cell_key(cx, cy);
+        };
+        if pool {
+            self.keyed.par_iter_mut().for_each(key);
+            self.keyed.par_sort();
+        } else {
+            self.keyed.iter_mut().for_each(key);
+            self.keyed.sort();
         }
-        self.keyed.sort();
         // Whether an element is wide is asked of every pair the usual pass looks at: once per
         // element here, a flag, instead of its reach again at each pair.
         self.is_wide.clear();
@@ -261,8 +266,12 @@ impl BroadPhase {
             out[self.fill[i] as usize] = (i as u32, p as u32);
             self.fill[i] += 1;
         }
-        for e in 0..n {
-            out[self.count[e] as usize..self.count[e + 1] as usize].sort_unstable();
+        if pool {
+            out.par_chunk_by_mut(|a, b| a.0 == b.0).for_each(<[(u32, u32)]>::sort_unstable);
+        } else {
+            for e in 0..n {
+                out[self.count[e] as usize..self.count[e + 1] as usize].sort_unstable();
+            }
         }
     }
     /// After a full [`BroadPhase::pairs`]: the elements `movers` (flagged in `is_mover`) have
@@ -316,7 +325,11 @@ impl BroadPhase {
         };
         self.pairs.clear();
         in_blocks(pool, movers.len(), MOVERS_BLOCK, &mut self.pairs, |b, pairs| search(&movers[b], pairs));
-        self.pairs.sort_unstable();
+        if pool {
+            self.pairs.par_sort_unstable();
+        } else {
+            self.pairs.sort_unstable();
+        }
         self.pairs.dedup();
         out.extend(self.pairs.iter().map(|&p| ((p >> 32) as u32, p as u32)));
     }
