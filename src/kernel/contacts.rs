@@ -206,17 +206,23 @@ impl Contacts {
             merge_part(&old[o], xo, &pairs[p], with_extra, &kept, &fresh, &fresh_extra, &admit, released, list, xs);
         };
         parts.resize_with(n_parts - 1, MergePart::default);
-        rayon::scope(|s| {
-            for (t, w) in parts.iter_mut().enumerate() {
-                let part = &part;
-                let release_j = &release_j;
-                s.spawn(move |_| {
-                    w.released_j.clear();
-                    part(t + 1, &mut w.list, &mut w.extra, &mut |c: &Contact| w.released_j.push(release_j(c)));
-                });
-            }
-            part(0, merged, merged_extra, &mut |c: &Contact| released.friction_j += release_j(c));
-        });
+        let mut book = |c: &Contact| released.friction_j += release_j(c);
+        if n_parts == 1 {
+            // Not through a scope, which from outside the pool would hand the merge to it.
+            part(0, merged, merged_extra, &mut book);
+        } else {
+            rayon::scope(|s| {
+                for (t, w) in parts.iter_mut().enumerate() {
+                    let part = &part;
+                    let release_j = &release_j;
+                    s.spawn(move |_| {
+                        w.released_j.clear();
+                        part(t + 1, &mut w.list, &mut w.extra, &mut |c: &Contact| w.released_j.push(release_j(c)));
+                    });
+                }
+                part(0, merged, merged_extra, &mut book);
+            });
+        }
         // The later parts in order, as one part would have made and booked them.
         for w in parts.iter() {
             merged.par_extend(w.list.par_iter().copied());
