@@ -505,8 +505,8 @@ impl Model {
     }
 
     /// Merge the candidate `pairs` (complete for the `covered` pairs) into the contacts (with
-    /// `pool`, on rayon's pool); with `record` (`Model::record_contact_forces`) their stored forces, no longer those of the
-    /// list's entries, are zeroed.
+    /// `pool`, on rayon's pool); with `record` (`Model::record_contact_forces`) their stored
+    /// forces, no longer those of the list's entries, are zeroed.
     #[allow(clippy::too_many_arguments)]
     fn merge(
         el: &Elements,
