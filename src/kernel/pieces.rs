@@ -3,8 +3,8 @@
 //! first piece to touch ([`plan`]); it adds its forces straight into the sums of its range and
 //! keeps every other contribution, in contact order, as a [`Record`], filed by the motion
 //! stage's chunk of its element ([`Kept`]). When all pieces are done the records are added
-//! piece by piece ([`fix_up`]; in a step, by the motion stage, each chunk's records just before
-//! it moves that chunk: [`fix_up_chunk`]). An element's sum is then formed from zero in
+//! piece by piece (in a step by the motion stage, each chunk's records just before it moves that
+//! chunk: [`fix_up_chunk`]). An element's sum is then formed from zero in
 //! increasing contact order, as the one-thread scatter forms it, so the bits are the same for
 //! any number of pieces or threads. An element outside every range (a projectile's element that
 //! pieces far apart touch) is made by the fix-up alone, from zero, in the same order.
@@ -78,7 +78,7 @@ pub fn cuts(contacts: usize, threads: usize, most: usize, cuts: &mut Vec<usize>,
     cuts.push(contacts);
 }
 
-/// One contribution to an element outside the piece's range, kept for [`fix_up`].
+/// One contribution to an element outside the piece's range, kept for [`fix_up_chunk`].
 #[derive(Debug, Clone, Copy)]
 pub struct Record {
     /// The element.
@@ -113,21 +113,6 @@ impl Kept {
     /// The records for elements of motion chunk `k`, in contact order.
     pub fn chunk(&self, k: usize) -> &[Record] {
         &self.by_chunk[k]
-    }
-
-    /// How many records there are.
-    pub fn len(&self) -> usize {
-        self.by_chunk.iter().map(Vec::len).sum()
-    }
-
-    /// True when there are none.
-    pub fn is_empty(&self) -> bool {
-        self.len() == 0
-    }
-
-    /// Every record, chunk by chunk (for each element, in contact order).
-    pub fn iter(&self) -> impl Iterator<Item = &Record> {
-        self.by_chunk.iter().flatten()
     }
 }
 
@@ -292,19 +277,10 @@ impl Sums for PieceSums<'_> {
     }
 }
 
-/// Add every piece's records to the sums, piece by piece, each in its contact order (the
-/// reference for [`fix_up_chunk`]).
-pub fn fix_up(sums: &mut [[f64; 3]], records: &[Kept]) {
-    // Indexed, not looked up as the chunk's are: a record for an element that does not exist
-    // is a bug of the plan, and stops here.
-    for r in records.iter().flat_map(Kept::iter) {
-        add(&mut sums[r.e as usize], r);
-    }
-}
-
 /// The records of motion chunk `k` added to its sums `sums` (element `k × CHUNK` first), piece
-/// by piece, each in its contact order: what [`fix_up`] adds to these elements, in its order,
-/// so the same bits. Called by the motion stage's job for the chunk, whichever thread runs it.
+/// by piece, each in its contact order: what adding every piece's records in turn would add to
+/// these elements, in its order, so the same bits (the tests' `fix_up` is that reference).
+/// Called by the motion stage's job for the chunk, whichever thread runs it.
 #[inline]
 pub fn fix_up_chunk(sums: &mut [[f64; 3]], k: usize, records: &[Kept]) {
     let first = k * MOTION_CHUNK;
@@ -323,6 +299,19 @@ fn add(s: &mut [f64; 3], r: &Record) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every piece's records added to the sums, piece by piece, each in its contact order: the
+    /// reference for [`fix_up_chunk`]. Indexed: a record for an element that does not exist is
+    /// a bug of the plan, and stops here.
+    fn fix_up(sums: &mut [[f64; 3]], records: &[Kept]) {
+        for r in records.iter().flat_map(|k| k.by_chunk.iter().flatten()) {
+            add(&mut sums[r.e as usize], r);
+        }
+    }
+
+    fn kept_len(k: &Kept) -> usize {
+        k.by_chunk.iter().map(Vec::len).sum()
+    }
     use crate::kernel::forces::Serial;
 
     /// Forces with a wide spread of magnitudes, so that any change of summation order shows in
@@ -370,7 +359,7 @@ mod tests {
     fn pieced(list: &[Contact], n: usize, cuts: &[usize], order: &[usize]) -> (Vec<[f64; 3]>, usize) {
         let (mut sums, records) = unfixed(list, n, cuts, order);
         fix_up(&mut sums, &records);
-        (sums, records.iter().map(Kept::len).sum())
+        (sums, records.iter().map(kept_len).sum())
     }
 
     /// The pieces' sums and records before the fix-up, the pieces run in `order`.
