@@ -3,8 +3,6 @@
 //! output; and the plan by which the contact stage on the pool scatters the forces in contact
 //! order (`pieces`).
 
-use std::ops::Range;
-
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -193,13 +191,20 @@ impl Contacts {
         let with_extra = !extra.is_empty();
         let kept = |c: &Contact| c.bond == Bond::Intact || !covered(c.i, c.j) || touching(c);
         let n_parts = if pool { rayon::current_num_threads().clamp(1, old.len().div_ceil(MERGE_PART_MIN).max(1)) } else { 1 };
-        // Part t: the contacts and candidates whose i is in [first_i[t], first_i[t + 1]).
-        let first_i: Vec<u32> = (0..n_parts).map(|t| if t == 0 { 0 } else { old[old.len() * t / n_parts].i }).chain([u32::MAX]).collect();
-        let old_at = |t: usize| if t == n_parts { old.len() } else { old.partition_point(|c| c.i < first_i[t]) };
-        let pairs_at = |t: usize| if t == n_parts { pairs.len() } else { pairs.partition_point(|&(i, _)| i < first_i[t]) };
-        let ranges: Vec<(Range<usize>, Range<usize>)> = (0..n_parts).map(|t| (old_at(t)..old_at(t + 1), pairs_at(t)..pairs_at(t + 1))).collect();
+        // Where part t starts in the list and in the candidates: at the first contact of the
+        // element i that the t-th of n_parts equal shares of the list starts in.
+        let starts: Vec<(usize, usize)> = (0..=n_parts)
+            .map(|t| match t {
+                0 => (0, 0),
+                t if t == n_parts => (old.len(), pairs.len()),
+                t => {
+                    let i0 = old[old.len() * t / n_parts].i;
+                    (old.partition_point(|c| c.i < i0), pairs.partition_point(|&(i, _)| i < i0))
+                }
+            })
+            .collect();
         let part = |t: usize, list: &mut Vec<Contact>, xs: &mut Vec<Extra>, released: &mut dyn FnMut(&Contact)| {
-            let (o, p) = ranges[t].clone();
+            let (o, p) = (starts[t].0..starts[t + 1].0, starts[t].1..starts[t + 1].1);
             let xo = if with_extra { &extra[o.clone()] } else { &[][..] };
             list.clear();
             xs.clear();
