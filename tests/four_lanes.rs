@@ -148,8 +148,39 @@ fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
             _ => {}
         }
     }
-    let (pos, vel, dt_s) = (&pos, &vel, m.dt_s());
-    let (mut taken, mut refused, mut mixed, mut sliding, mut forgetting) = (0, 0, 0, 0, 0);
+    let Groups { taken, refused, mixed, sliding, forgetting, .. } = groups_against_scalar(&m, &pos, &vel);
+    eprintln!("{taken} groups taken ({mixed} of bonds and frictional pairs; {sliding} sliding and {forgetting} forgetting pairs), {refused} refused");
+    assert!(taken > 100 && mixed > 20 && sliding > 5 && forgetting > 5, "every kind must occur: {taken} taken, {mixed} mixed, {sliding} sliding, {forgetting} forgetting");
+    // The frictional pairs with nothing to forget and the target stretched by 1.5 %: groups of
+    // four pairs apart with nothing to forget, which the lanes take without their laws, beside
+    // groups of pairs apart, stretched bonds (refused) and mixed ones: the same bits.
+    for c in m.state.contacts.list.iter_mut().filter(|c| c.bond == Bond::Frictional) {
+        (c.ut_m, c.rest_m) = (0.0, m.classes[c.class as usize].radius_sum_m);
+    }
+    let stretched: Vec<[f64; 3]> = m.state.pos.iter().map(|p| [1.015 * p[0], 1.015 * p[1], p[2]]).collect();
+    let Groups { taken, refused, nothing, .. } = groups_against_scalar(&m, &stretched, &m.state.vel);
+    eprintln!("stretched: {taken} groups taken, {nothing} of them four pairs apart with nothing to forget, {refused} refused");
+    assert!(nothing > 10 && taken > nothing, "{nothing} groups of four pairs apart with nothing to forget, of {taken}");
+}
+
+/// What [`groups_against_scalar`] met.
+#[derive(Default)]
+struct Groups {
+    taken: usize,
+    refused: usize,
+    mixed: usize,
+    sliding: usize,
+    forgetting: usize,
+    nothing: usize,
+}
+
+/// Every group of one class of `m`'s list through the mixed lanes at `pos`, `vel`, against
+/// four scalar calls (forces, history and the friction booked, bit for bit; a refused group
+/// changes nothing), counting the kinds met.
+fn groups_against_scalar(m: &demsweep::kernel::Model, pos: &[[f64; 3]], vel: &[[f64; 3]]) -> Groups {
+    let dt_s = m.dt_s();
+    let mut n = Groups::default();
+    let Groups { taken, refused, mixed, sliding, forgetting, nothing } = &mut n;
     for g in m.state.contacts.list.chunks_exact(bonds4::LANES) {
         let cs: [Contact; bonds4::LANES] = g.try_into().unwrap();
         if !mixed4::one_class(&cs) {
@@ -181,21 +212,23 @@ fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
                 assert_eq!(lanes.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]), scalar.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]));
                 assert_eq!(d_lanes.friction_j.to_bits(), d.friction_j.to_bits(), "friction booked for {cs:?}");
                 let kinds = cs.iter().filter(|c| c.bond == Bond::Intact).count();
-                mixed += (kinds > 0 && kinds < bonds4::LANES) as usize;
+                *mixed += (kinds > 0 && kinds < bonds4::LANES) as usize;
+                let mut idle = 0;
                 for (l, c) in cs.iter().enumerate() {
                     let apart = forces::kinematics(pos, vel, c, k).is_err();
-                    sliding += (!apart && lane_w[l] != 0.0) as usize;
-                    forgetting += (apart && (c.ut_m != 0.0 || c.rest_m != k.radius_sum_m)) as usize;
+                    *sliding += (!apart && lane_w[l] != 0.0) as usize;
+                    *forgetting += (apart && (c.ut_m != 0.0 || c.rest_m != k.radius_sum_m)) as usize;
+                    idle += (apart && c.ut_m == 0.0 && c.rest_m == k.radius_sum_m) as usize;
                 }
-                taken += 1;
+                *nothing += (idle == bonds4::LANES) as usize;
+                *taken += 1;
             }
             None => {
                 assert!(!elastic, "the mixed lanes refused a group whose bonds the scalar law kept elastic: {cs:?}");
                 assert_eq!((lanes, d_lanes.friction_j.to_bits()), (cs, d0.friction_j.to_bits()), "a refused group must change nothing");
-                refused += 1;
+                *refused += 1;
             }
         }
     }
-    eprintln!("{taken} groups taken ({mixed} of bonds and frictional pairs; {sliding} sliding and {forgetting} forgetting pairs), {refused} refused");
-    assert!(taken > 100 && mixed > 20 && sliding > 5 && forgetting > 5, "every kind must occur: {taken} taken, {mixed} mixed, {sliding} sliding, {forgetting} forgetting");
+    n
 }
