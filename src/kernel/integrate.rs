@@ -294,14 +294,13 @@ impl Free<'_> {
                     _mm256_storeu_pd(v.add(4 * k), vn[k]);
                     _mm256_storeu_pd(x.add(4 * k), xn[k]);
                 }
-                let ((v0, x0), (v1, x1), (v2, x2)) = ((vn[0], xn[0]), (vn[1], xn[1]), (vn[2], xn[2]));
                 // `too_fast`: !((vx² + vy²) + (|ω| r)² <= limit²).
-                let (vx, vy, w) = columns(v0, v1, v2);
+                let (vx, vy, w) = columns(vn[0], vn[1], vn[2]);
                 let spin = _mm256_mul_pd(_mm256_andnot_pd(sign, w), _mm256_loadu_pd(r.as_ptr()));
                 let speed2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(spin, spin));
                 bad = _mm256_or_pd(bad, _mm256_cmp_pd::<_CMP_NLE_UQ>(speed2, _mm256_set1_pd(limit2)));
                 // The drift: dx² + dy² > m², from the reference rows [x, y] put into lanes.
-                let (px, py, _) = columns(x0, x1, x2);
+                let (px, py, _) = columns(xn[0], xn[1], xn[2]);
                 let (g01, g23) = (_mm256_loadu_pd(g[0..2].as_flattened().as_ptr()), _mm256_loadu_pd(g[2..4].as_flattened().as_ptr()));
                 let (lo, hi) = (_mm256_permute2f128_pd::<0x20>(g01, g23), _mm256_permute2f128_pd::<0x31>(g01, g23));
                 let (dx, dy) = (_mm256_sub_pd(px, _mm256_unpacklo_pd(lo, hi)), _mm256_sub_pd(py, _mm256_unpackhi_pd(lo, hi)));
