@@ -14,9 +14,14 @@
 //! - `rows`: the bonds of a row and a direction (east, up-left, up-right) four at a time, their
 //!   history in columns by direction, rows loaded and added three vectors at a time;
 //! - `rows-scalar-sums`: `rows` with the sums added lane by lane (what the contiguous loads
-//!   alone give).
-//! The two ways add each element's forces in different orders, so positions agree to rounding,
-//! not bitwise (printed). What neither has of demsweep's kernel (other contact kinds, the
+//!   alone give);
+//! - `rows-then-list`: demsweep's bits kept the simple way — the forces by rows with the history
+//!   left in the list, each stored at its contact's place, then the sums added in the list's
+//!   order as `gathered` adds them.
+//! `rows` adds each element's forces in another order than the list's, so its positions agree
+//! with `gathered`'s to rounding, not bitwise (printed; the lane-by-lane sums happen to keep the
+//! list's order on this lattice: an element's first two terms, its j parts from the row below,
+//! commute). What neither has of demsweep's kernel (other contact kinds, the
 //! dissipation ledger, the motion stage's checks) costs the same in both.
 use std::arch::x86_64::*;
 use std::time::Instant;
@@ -393,17 +398,78 @@ unsafe fn by_rows<const VECTOR_SUMS: bool>(st: &mut State, l: &Lattice, h: &mut 
     left
 }
 
-const VARIANTS: [&str; 4] = ["gathered", "gathered-ahead", "rows", "rows-scalar-sums"];
+/// The contact stage in two passes that keep demsweep's bits: the forces by rows and directions
+/// (history read from and written to the list, each force stored at its contact's place), then
+/// the sums in the list's order as [`gathered`] adds them. `slot[d][i]`: the list index of i's
+/// bond in direction d.
+#[target_feature(enable = "avx")]
+unsafe fn rows_then_list(st: &mut State, l: &Lattice, list: &mut [Contact], slot: &[Vec<u32>; 3], buf: &mut [[f64; 4]]) -> usize {
+    let mut left = 0;
+    for r in 0..l.rows {
+        for d in 0..3 {
+            let Some((off, c0, c1)) = l.run(r, d) else { continue };
+            let mut c = c0;
+            while c + 4 <= c1 {
+                let i = r * l.cols + c;
+                let j = i + off;
+                c += 4;
+                let k: [usize; 4] = std::array::from_fn(|q| slot[d][i + q] as usize);
+                let g = k.map(|k| list[k]);
+                unsafe {
+                    let (xi, yi, _) = load_rows(&st.pos, i);
+                    let (xj, yj, _) = load_rows(&st.pos, j);
+                    let (vi, vj) = (load_rows(&st.vel, i), load_rows(&st.vel, j));
+                    let o = law(geometry(xi, yi, xj, yj), vi, vj, lanes!(g, |c| c.rest_m), lanes!(g, |c| c.ut_m), lanes!(g, |c| c.dp_m));
+                    if !o.elastic {
+                        left += 1;
+                        continue;
+                    }
+                    let ([fx, fy, ti, tj], ut) = (o.f.map(|v| out(v)), out(o.ut));
+                    for q in 0..4 {
+                        list[k[q]].ut_m = ut[q];
+                        buf[k[q]] = [fx[q], fy[q], ti[q], tj[q]];
+                    }
+                }
+            }
+            for c in c..c1 {
+                let i = r * l.cols + c;
+                let k = slot[d][i] as usize;
+                let b = &mut list[k];
+                let (f, ut) = one(st.pos[i], st.pos[i + off], st.vel[i], st.vel[i + off], b.rest_m, b.ut_m, b.dp_m);
+                b.ut_m = ut;
+                buf[k] = f;
+            }
+        }
+    }
+    let sums = &mut st.sums[..];
+    let mut serial = Serial { run_i: u32::MAX, acc: [0.0; 3] };
+    for (c, f) in list.iter().zip(&*buf) {
+        serial.add(sums, c.i, c.j, *f);
+    }
+    if serial.run_i != u32::MAX {
+        sums[serial.run_i as usize] = serial.acc;
+    }
+    left
+}
+
+const VARIANTS: [&str; 5] = ["gathered", "gathered-ahead", "rows", "rows-scalar-sums", "rows-then-list"];
+
+/// What the two-pass variant needs besides the list: each bond's place, and the forces.
+struct Places {
+    slot: [Vec<u32>; 3],
+    buf: Vec<[f64; 4]>,
+}
 
 /// One step of variant `v` (contact stage, then motion); the groups that left the lanes.
-fn step(v: usize, st: &mut State, list: &mut [Contact], l: &Lattice, h: &mut History) -> usize {
+fn step(v: usize, st: &mut State, list: &mut [Contact], l: &Lattice, h: &mut History, p: &mut Places) -> usize {
     // SAFETY: `main` checked that the processor has AVX.
     let left = unsafe {
         match v {
             0 => gathered::<false>(st, list),
             1 => gathered::<true>(st, list),
             2 => by_rows::<true>(st, l, h),
-            _ => by_rows::<false>(st, l, h),
+            3 => by_rows::<false>(st, l, h),
+            _ => rows_then_list(st, l, list, &p.slot, &mut p.buf),
         }
     };
     motion(st);
@@ -418,11 +484,18 @@ fn main() {
     let (st0, list0) = build(&l);
     let n = st0.pos.len();
     let h0 = History { rest_m: std::array::from_fn(|_| vec![2.0 * RAD_M; n]), ut_m: std::array::from_fn(|_| vec![0.0; n]), dp_m: std::array::from_fn(|_| vec![0.0; n]) };
+    let mut slot: [Vec<u32>; 3] = std::array::from_fn(|_| vec![u32::MAX; n]);
+    for (k, c) in list0.iter().enumerate() {
+        let (i, r) = (c.i as usize, c.i as usize / l.cols);
+        let d = (0..3).find(|&d| l.run(r, d).is_some_and(|(off, _, _)| c.j as usize == i + off)).expect("a lattice bond");
+        slot[d][i] = k as u32;
+    }
+    let mut places = Places { slot, buf: vec![[0.0; 4]; list0.len()] };
     let mut runs: Vec<(State, Vec<Contact>, History)> = VARIANTS.iter().map(|_| (st0.clone(), list0.clone(), h0.clone())).collect();
     // The variants against the first after 200 steps: the same motion to rounding.
     for (v, (st, list, h)) in runs.iter_mut().enumerate() {
         for _ in 0..200 {
-            assert_eq!(step(v, st, list, &l, h), 0, "{}: a group left the elastic branch", VARIANTS[v]);
+            assert_eq!(step(v, st, list, &l, h, &mut places), 0, "{}: a group left the elastic branch", VARIANTS[v]);
         }
     }
     let moved = runs[0].0.pos.iter().zip(&st0.pos).map(|(p, q)| (p[0] - q[0]).abs().max((p[1] - q[1]).abs())).fold(0.0, f64::max);
@@ -439,7 +512,7 @@ fn main() {
         for (v, (st, list, h)) in runs.iter_mut().enumerate() {
             let t = Instant::now();
             for _ in 0..steps {
-                step(v, st, list, &l, h);
+                step(v, st, list, &l, h, &mut places);
             }
             ns[v].push(t.elapsed().as_secs_f64() / (steps * list0.len()) as f64 * 1e9);
         }
