@@ -74,6 +74,24 @@ impl Lattice {
             _ => Some(if r % 2 == 0 { (c, 0, c) } else { (c + 1, 0, c - 1) }),
         }
     }
+
+    /// Every row's runs of bonds in row order, directions in turn: (direction, j − i, the run's
+    /// first i, its number of bonds).
+    fn runs(&self) -> impl Iterator<Item = (usize, usize, usize, usize)> + '_ {
+        (0..self.rows).flat_map(move |r| (0..3).filter_map(move |d| self.run(r, d).map(|(off, c0, c1)| (d, off, r * self.cols + c0, c1 - c0))))
+    }
+}
+
+/// Force `f` = (fx, fy, ti, tj) added to i and j: (fx, fy, ti) and (−fx, −fy, tj).
+fn add_pair(sums: &mut [[f64; 3]], i: usize, j: usize, f: [f64; 4]) {
+    let si = &mut sums[i];
+    si[0] += f[0];
+    si[1] += f[1];
+    si[2] += f[2];
+    let sj = &mut sums[j];
+    sj[0] -= f[0];
+    sj[1] -= f[1];
+    sj[2] += f[3];
 }
 
 fn uniform(s: &mut u64) -> f64 {
@@ -341,58 +359,37 @@ struct History {
 unsafe fn by_rows<const VECTOR_SUMS: bool>(st: &mut State, l: &Lattice, h: &mut History) -> usize {
     let mut left = 0;
     let neg = _mm256_set1_pd(-0.0);
-    for r in 0..l.rows {
-        for d in 0..3 {
-            let Some((off, c0, c1)) = l.run(r, d) else { continue };
-            let mut c = c0;
-            while c + 4 <= c1 {
-                let i = r * l.cols + c;
-                let j = i + off;
-                c += 4;
-                unsafe {
-                    let (xi, yi, _) = load_rows(&st.pos, i);
-                    let (xj, yj, _) = load_rows(&st.pos, j);
-                    let (vi, vj) = (load_rows(&st.vel, i), load_rows(&st.vel, j));
-                    let (rest, dp, ut) = (&h.rest_m[d][i..i + 4], &h.dp_m[d][i..i + 4], &mut h.ut_m[d][i..i + 4]);
-                    let o = law(geometry(xi, yi, xj, yj), vi, vj, _mm256_loadu_pd(rest.as_ptr()), _mm256_loadu_pd(ut.as_ptr()), _mm256_loadu_pd(dp.as_ptr()));
-                    if !o.elastic {
-                        left += 1;
-                        continue;
-                    }
-                    _mm256_storeu_pd(ut.as_mut_ptr(), o.ut);
-                    let [fx, fy, ti, tj] = o.f;
-                    if VECTOR_SUMS {
-                        add_rows(&mut st.sums, i, rows(fx, fy, ti));
-                        add_rows(&mut st.sums, j, rows(_mm256_xor_pd(fx, neg), _mm256_xor_pd(fy, neg), tj));
-                    } else {
-                        let (fx, fy, ti, tj) = (out(fx), out(fy), out(ti), out(tj));
-                        for q in 0..4 {
-                            let si = &mut st.sums[i + q];
-                            si[0] += fx[q];
-                            si[1] += fy[q];
-                            si[2] += ti[q];
-                            let sj = &mut st.sums[j + q];
-                            sj[0] -= fx[q];
-                            sj[1] -= fy[q];
-                            sj[2] += tj[q];
-                        }
+    for (d, off, first, n) in l.runs() {
+        let whole = first + n / 4 * 4;
+        for i in (first..whole).step_by(4) {
+            let j = i + off;
+            unsafe {
+                let (xi, yi, _) = load_rows(&st.pos, i);
+                let (xj, yj, _) = load_rows(&st.pos, j);
+                let (vi, vj) = (load_rows(&st.vel, i), load_rows(&st.vel, j));
+                let (rest, dp, ut) = (&h.rest_m[d][i..i + 4], &h.dp_m[d][i..i + 4], &mut h.ut_m[d][i..i + 4]);
+                let o = law(geometry(xi, yi, xj, yj), vi, vj, _mm256_loadu_pd(rest.as_ptr()), _mm256_loadu_pd(ut.as_ptr()), _mm256_loadu_pd(dp.as_ptr()));
+                if !o.elastic {
+                    left += 1;
+                    continue;
+                }
+                _mm256_storeu_pd(ut.as_mut_ptr(), o.ut);
+                let [fx, fy, ti, tj] = o.f;
+                if VECTOR_SUMS {
+                    add_rows(&mut st.sums, i, rows(fx, fy, ti));
+                    add_rows(&mut st.sums, j, rows(_mm256_xor_pd(fx, neg), _mm256_xor_pd(fy, neg), tj));
+                } else {
+                    let (fx, fy, ti, tj) = (out(fx), out(fy), out(ti), out(tj));
+                    for q in 0..4 {
+                        add_pair(&mut st.sums, i + q, j + q, [fx[q], fy[q], ti[q], tj[q]]);
                     }
                 }
             }
-            for c in c..c1 {
-                let i = r * l.cols + c;
-                let j = i + off;
-                let (f, ut) = one(st.pos[i], st.pos[j], st.vel[i], st.vel[j], h.rest_m[d][i], h.ut_m[d][i], h.dp_m[d][i]);
-                h.ut_m[d][i] = ut;
-                let si = &mut st.sums[i];
-                si[0] += f[0];
-                si[1] += f[1];
-                si[2] += f[2];
-                let sj = &mut st.sums[j];
-                sj[0] -= f[0];
-                sj[1] -= f[1];
-                sj[2] += f[3];
-            }
+        }
+        for i in whole..first + n {
+            let (f, ut) = one(st.pos[i], st.pos[i + off], st.vel[i], st.vel[i + off], h.rest_m[d][i], h.ut_m[d][i], h.dp_m[d][i]);
+            h.ut_m[d][i] = ut;
+            add_pair(&mut st.sums, i, i + off, f);
         }
     }
     left
@@ -405,40 +402,34 @@ unsafe fn by_rows<const VECTOR_SUMS: bool>(st: &mut State, l: &Lattice, h: &mut 
 #[target_feature(enable = "avx")]
 unsafe fn rows_then_list(st: &mut State, l: &Lattice, list: &mut [Contact], slot: &[Vec<u32>; 3], buf: &mut [[f64; 4]]) -> usize {
     let mut left = 0;
-    for r in 0..l.rows {
-        for d in 0..3 {
-            let Some((off, c0, c1)) = l.run(r, d) else { continue };
-            let mut c = c0;
-            while c + 4 <= c1 {
-                let i = r * l.cols + c;
-                let j = i + off;
-                c += 4;
-                let k: [usize; 4] = std::array::from_fn(|q| slot[d][i + q] as usize);
-                let g = k.map(|k| list[k]);
-                unsafe {
-                    let (xi, yi, _) = load_rows(&st.pos, i);
-                    let (xj, yj, _) = load_rows(&st.pos, j);
-                    let (vi, vj) = (load_rows(&st.vel, i), load_rows(&st.vel, j));
-                    let o = law(geometry(xi, yi, xj, yj), vi, vj, lanes!(g, |c| c.rest_m), lanes!(g, |c| c.ut_m), lanes!(g, |c| c.dp_m));
-                    if !o.elastic {
-                        left += 1;
-                        continue;
-                    }
-                    let ([fx, fy, ti, tj], ut) = (o.f.map(|v| out(v)), out(o.ut));
-                    for q in 0..4 {
-                        list[k[q]].ut_m = ut[q];
-                        buf[k[q]] = [fx[q], fy[q], ti[q], tj[q]];
-                    }
+    for (d, off, first, n) in l.runs() {
+        let whole = first + n / 4 * 4;
+        for i in (first..whole).step_by(4) {
+            let j = i + off;
+            let k: [usize; 4] = std::array::from_fn(|q| slot[d][i + q] as usize);
+            let g = k.map(|k| list[k]);
+            unsafe {
+                let (xi, yi, _) = load_rows(&st.pos, i);
+                let (xj, yj, _) = load_rows(&st.pos, j);
+                let (vi, vj) = (load_rows(&st.vel, i), load_rows(&st.vel, j));
+                let o = law(geometry(xi, yi, xj, yj), vi, vj, lanes!(g, |c| c.rest_m), lanes!(g, |c| c.ut_m), lanes!(g, |c| c.dp_m));
+                if !o.elastic {
+                    left += 1;
+                    continue;
+                }
+                let ([fx, fy, ti, tj], ut) = (o.f.map(|v| out(v)), out(o.ut));
+                for q in 0..4 {
+                    list[k[q]].ut_m = ut[q];
+                    buf[k[q]] = [fx[q], fy[q], ti[q], tj[q]];
                 }
             }
-            for c in c..c1 {
-                let i = r * l.cols + c;
-                let k = slot[d][i] as usize;
-                let b = &mut list[k];
-                let (f, ut) = one(st.pos[i], st.pos[i + off], st.vel[i], st.vel[i + off], b.rest_m, b.ut_m, b.dp_m);
-                b.ut_m = ut;
-                buf[k] = f;
-            }
+        }
+        for i in whole..first + n {
+            let k = slot[d][i] as usize;
+            let b = &mut list[k];
+            let (f, ut) = one(st.pos[i], st.pos[i + off], st.vel[i], st.vel[i + off], b.rest_m, b.ut_m, b.dp_m);
+            b.ut_m = ut;
+            buf[k] = f;
         }
     }
     let sums = &mut st.sums[..];
