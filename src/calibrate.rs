@@ -8,9 +8,15 @@
 //! the depth is within the tolerance (or the bracket is narrower than `factor_rel_tol`, which
 //! can happen where the discrete model's depth steps). The result is the evaluated factor whose
 //! depth is closest to the target.
+//!
+//! On an irregular target the depth is that of one packing among equally likely ones, so the
+//! depth calibrated is the **mean over packings** (the scene's seed and the `packings − 1`
+//! seeds after it, run side by side on the pool): the factor then describes the concrete, not
+//! one mesh of it.
 
 use crate::cases::penetration::PenetrationScene;
 use crate::error::{Error, Result};
+use crate::material::Arrangement;
 use crate::penetration::{self, Hooks, Row};
 
 /// What to calibrate to.
@@ -24,15 +30,18 @@ pub struct Target {
     pub tolerance_in: f64,
     /// Stop when the bracket's hi/lo − 1 is below this.
     pub factor_rel_tol: f64,
-    /// At most this many runs.
+    /// At most this many factors tried.
     pub max_runs: usize,
+    /// Packings whose mean depth is calibrated (seeds `target.seed` onward; 1 for a regular
+    /// lattice, whose packing has no seed).
+    pub packings: u32,
 }
 
 impl Target {
     /// The source's: 5 in at 500 ft/s, to ±0.25 in (the depth of this chaotic event moves by about
     /// ±0.3 in when the factor moves by 0.1 %, so a tighter tolerance only picks noise).
     pub fn seed() -> Target {
-        Target { v0_fps: 500.0, depth_in: 5.0, tolerance_in: 0.25, factor_rel_tol: 1e-3, max_runs: 30 }
+        Target { v0_fps: 500.0, depth_in: 5.0, tolerance_in: 0.25, factor_rel_tol: 1e-3, max_runs: 30, packings: 3 }
     }
 
     fn validate(&self) -> Result<()> {
@@ -41,8 +50,22 @@ impl Target {
                 return Err(Error::input(f, format!("must be a number > 0, got {v}")));
             }
         }
+        if self.packings == 0 {
+            return Err(Error::input("--packings", "must be ≥ 1"));
+        }
         Ok(())
     }
+}
+
+/// One factor tried: its runs at the reference velocity, one per packing.
+#[derive(Debug, Clone)]
+pub struct Trial {
+    /// The factor.
+    pub factor: f64,
+    /// Each packing's run, in seed order.
+    pub rows: Vec<Row>,
+    /// Their mean depth, in.
+    pub mean_depth_in: f64,
 }
 
 /// The calibration's result.
@@ -50,30 +73,39 @@ impl Target {
 pub struct Calibration {
     /// The factor chosen.
     pub factor: f64,
-    /// Its run at the reference velocity.
-    pub row: Row,
-    /// Every run made: (factor, row), in order.
-    pub runs: Vec<(f64, Row)>,
-    /// The depth is within the tolerance.
+    /// Its runs at the reference velocity.
+    pub trial: Trial,
+    /// Every factor tried, in order.
+    pub runs: Vec<Trial>,
+    /// The mean depth is within the tolerance.
     pub converged: bool,
 }
 
-/// Calibrate `scene` to `target`; `each` sees every run as it finishes.
-pub fn calibrate(scene: &PenetrationScene, target: &Target, each: &mut dyn FnMut(f64, &Row)) -> Result<Calibration> {
+/// Calibrate `scene` to `target`; `each` sees every factor's runs as they finish.
+pub fn calibrate(scene: &PenetrationScene, target: &Target, each: &mut dyn FnMut(&Trial)) -> Result<Calibration> {
+    use rayon::prelude::*;
     target.validate()?;
-    let mut runs: Vec<(f64, Row)> = Vec::new();
-    let mut depth = |f: f64, runs: &mut Vec<(f64, Row)>| -> Result<f64> {
+    let packings = if scene.target.arrangement == Arrangement::Irregular { target.packings } else { 1 };
+    let mut runs: Vec<Trial> = Vec::new();
+    let mut depth = |f: f64, runs: &mut Vec<Trial>| -> Result<f64> {
         if runs.len() >= target.max_runs {
-            return Err(Error::input("calibrate", format!("no factor found in {} runs", target.max_runs)));
+            return Err(Error::input("calibrate", format!("no factor found in {} tries", target.max_runs)));
         }
-        let mut s = scene.clone();
-        s.concrete.strength_factor = f;
-        s.projectile.v0_fps = target.v0_fps;
-        let row = penetration::run(&s, Hooks::default())?.row;
-        each(f, &row);
-        let d = row.outcome.depth_in;
-        runs.push((f, row));
-        Ok(d)
+        let rows = (0..packings as u64)
+            .into_par_iter()
+            .map(|k| {
+                let mut s = scene.clone();
+                s.concrete.strength_factor = f;
+                s.projectile.v0_fps = target.v0_fps;
+                s.target.seed = scene.target.seed + k;
+                Ok(penetration::run(&s, Hooks::default())?.row)
+            })
+            .collect::<Result<Vec<Row>>>()?;
+        let mean_depth_in = rows.iter().map(|r| r.outcome.depth_in).sum::<f64>() / rows.len() as f64;
+        let trial = Trial { factor: f, rows, mean_depth_in };
+        each(&trial);
+        runs.push(trial);
+        Ok(mean_depth_in)
     };
     let close = |d: f64| (d - target.depth_in).abs() <= target.tolerance_in;
     // Bracket: lo too deep (weak), hi too shallow (strong).
@@ -92,7 +124,7 @@ pub fn calibrate(scene: &PenetrationScene, target: &Target, each: &mut dyn FnMut
                 return Err(Error::input("calibrate", format!("depth {d} in at factor {f}: no bracket for {} in", target.depth_in)));
             }
         };
-        while !runs.iter().any(|(_, r)| close(r.outcome.depth_in)) && hi / lo - 1.0 > target.factor_rel_tol {
+        while !runs.iter().any(|t| close(t.mean_depth_in)) && hi / lo - 1.0 > target.factor_rel_tol {
             let mid = (lo * hi).sqrt();
             if depth(mid, &mut runs)? > target.depth_in {
                 lo = mid;
@@ -103,11 +135,11 @@ pub fn calibrate(scene: &PenetrationScene, target: &Target, each: &mut dyn FnMut
     }
     let best = runs
         .iter()
-        .min_by(|a, b| (a.1.outcome.depth_in - target.depth_in).abs().total_cmp(&(b.1.outcome.depth_in - target.depth_in).abs()))
+        .min_by(|a, b| (a.mean_depth_in - target.depth_in).abs().total_cmp(&(b.mean_depth_in - target.depth_in).abs()))
         .expect("one run at least")
         .clone();
-    let converged = close(best.1.outcome.depth_in);
-    Ok(Calibration { factor: best.0, row: best.1, runs, converged })
+    let converged = close(best.mean_depth_in);
+    Ok(Calibration { factor: best.factor, trial: best, runs, converged })
 }
 
 /// `text` (a penetration scene file) with `concrete.strength_factor = factor` and `comment`

@@ -14,11 +14,17 @@ use demsweep::material::{Arrangement, Plane};
 const R: f64 = 0.005;
 
 fn relaxed_patch(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_pa: f64) -> (Model, Vec<usize>, f64) {
-    let (w, h) = (80.0 * R, 80.0 * R);
+    relaxed_patch_sized(e, nu, plane, arrangement, sigma_pa, 80.0, 1)
+}
+
+/// A square patch of side `size_r` element radii; `seed` for the irregular packing.
+fn relaxed_patch_sized(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_pa: f64, size_r: f64, seed: u64) -> (Model, Vec<usize>, f64) {
+    let (w, h) = (size_r * R, size_r * R);
     let rect = Rect { x_min_m: 0.0, x_max_m: w, y_min_m: 0.0, y_max_m: h };
     let lat = match arrangement {
         Arrangement::SimpleCubic => lattice::simple_cubic(&rect, R).unwrap(),
-        _ => lattice::close_packed(&rect, R).unwrap(),
+        Arrangement::Irregular => lattice::irregular(&rect, R, seed, lattice::IRREGULAR_BOND_GAP).unwrap(),
+        Arrangement::ClosePacked => lattice::close_packed(&rect, R).unwrap(),
     };
     let t = 1.0;
     let mut b = ModelBuilder::new(plane, t);
@@ -92,12 +98,20 @@ fn virial(model: &Model, set: &[usize], cell_volume: f64) -> [[f64; 2]; 2] {
 
 /// (E*, ν*) measured in the interior.
 fn measure(e: f64, nu: f64, plane: Plane, arrangement: Arrangement) -> (f64, f64) {
-    let (model, interior, cell) = relaxed_patch(e, nu, plane, arrangement, 1.0e6);
+    measure_sized(e, nu, plane, arrangement, 80.0, 1)
+}
+
+fn measure_sized(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, size_r: f64, seed: u64) -> (f64, f64) {
+    let (model, interior, cell) = relaxed_patch_sized(e, nu, plane, arrangement, 1.0e6, size_r, seed);
     let g = gradient(&model, &interior);
     let s = virial(&model, &interior, cell);
     let (exx, eyy) = (g[0][0], g[1][1]);
     let (sxx, syy) = (s[0][0], s[1][1]);
-    assert!(syy.abs() < 0.02 * sxx, "interior not in uniaxial stress: σyy/σxx = {}", syy / sxx);
+    // The formulas below hold for any plane stress state of an isotropic medium; the check is
+    // that the load is what was meant. A disordered packing's interior carries a few per cent
+    // of transverse stress from its random fabric.
+    let transverse = if arrangement == Arrangement::Irregular { 0.05 } else { 0.02 };
+    assert!(syy.abs() < transverse * sxx, "interior not in uniaxial stress: σyy/σxx = {}", syy / sxx);
     let e_star = (sxx * sxx - syy * syy) / (sxx * exx - syy * eyy);
     let nu_star = e_star * (syy * exx - sxx * eyy) / (sxx * sxx - syy * syy);
     (e_star, nu_star)
@@ -136,4 +150,27 @@ fn simple_cubic_patch_has_e_star_and_no_poisson_effect() {
     let (e_star, nu_star) = measure(30e9, 0.2, Plane::Stress, Arrangement::SimpleCubic);
     assert!((e_star / 30e9 - 1.0).abs() < 0.005, "E* {e_star}");
     assert!(nu_star.abs() < 1e-3, "ν* {nu_star}");
+}
+
+/// The irregular packing with the measured correction (`material::irregular_correction`):
+/// patches of seeds other than the four it was measured on, at two sizes, recover E and ν
+/// within 3 % on average (each patch scatters by about ±4 %: its interior holds a few hundred
+/// elements of a random packing).
+#[test]
+fn irregular_patch_recovers_e_and_nu_on_average_with_the_measured_correction() {
+    let (e, nu) = (30e9, 0.2);
+    let mut sum = (0.0, 0.0);
+    let patches = [(120.0, 11), (120.0, 12), (200.0, 13)];
+    for (size, seed) in patches {
+        let (e_star, nu_star) = measure_sized(e, nu, Plane::Strain, Arrangement::Irregular, size, seed);
+        let nu_got = nu_star / (1.0 + nu_star);
+        let e_got = e_star * (1.0 - nu_got * nu_got);
+        eprintln!("irregular {size} R seed {seed}: E {:+.2} %, ν {:.4} ({:+.2} %)", 100.0 * (e_got / e - 1.0), nu_got, 100.0 * (nu_got / nu - 1.0));
+        assert!((e_got / e - 1.0).abs() < 0.08 && (nu_got / nu - 1.0).abs() < 0.12, "one patch: E {e_got}, ν {nu_got}");
+        sum = (sum.0 + e_got, sum.1 + nu_got);
+    }
+    let n = patches.len() as f64;
+    let (e_mean, nu_mean) = (sum.0 / n, sum.1 / n);
+    assert!((e_mean / e - 1.0).abs() < 0.03, "mean E {e_mean}");
+    assert!((nu_mean / nu - 1.0).abs() < 0.03, "mean ν {nu_mean}");
 }

@@ -268,3 +268,70 @@ fn perforation_records_the_residual_speed_when_first_through_and_settles_when_cl
     assert_eq!(t.observe(&later, &spec, 150.0), Some("perforated"));
     assert_eq!(t.v_residual_mps, 80.0, "the residual speed is the one at first exit");
 }
+
+/// A beam split in two under the projectile (the V of a hinged beam): both halves still
+/// supported, nothing detached, the projectile wholly past the back face between them. The back
+/// face has been holed, so the run is scabbed as well as perforated: scabbing can never come
+/// after perforation in a sweep.
+#[test]
+fn a_perforation_through_a_split_beam_with_nothing_detached_is_a_scab_too() {
+    let (mut m, mut det, lay) = small();
+    let target = range(&m, "target");
+    let x0 = lay.impact_x_m;
+    // Cut the beam along x = impact point and open a gap wider than the projectile.
+    let left = |e: usize| m.el.initial[e][0] < x0;
+    let tset: Vec<bool> = (0..m.el.radius.len()).map(|e| target.contains(&e) && left(e)).collect();
+    assert!(cut(&mut m, &|e| tset[e]) > 0);
+    let half = 0.5 * lay.projectile_width_m + 2.0 * lay.concrete_radius_m;
+    for e in target.clone() {
+        if m.el.is_fully_prescribed(e) {
+            continue;
+        }
+        let d = m.el.initial[e][0] - x0;
+        if d.abs() < half {
+            // Push the elements near the cut sideways out of the projectile's path.
+            m.state.pos[e][0] = x0 + d.signum() * (half + d.abs());
+        }
+    }
+    let (lo, hi) = range(&m, "projectile").fold((f64::INFINITY, f64::NEG_INFINITY), |a, e| {
+        (a.0.min(m.state.pos[e][1] - m.el.radius[e]), a.1.max(m.state.pos[e][1] + m.el.radius[e]))
+    });
+    shift_projectile(&mut m, -(lo - lay.back_y_m) - (hi - lo) - 0.1 * M_PER_IN, -50.0);
+    let l = det.look(&m);
+    assert!(l.through, "the projectile is past the back face");
+    assert_eq!(l.scab.0, 0, "nothing came loose");
+    let o = det.outcome(&m);
+    assert!(o.perforated && o.scabbed, "perforated {} scabbed {}", o.perforated, o.scabbed);
+    assert_eq!(o.scab_time_s, o.perforation_time_s, "holed when first through");
+    // And through the stop rule's record: the first look through books both.
+    use demsweep::run::StopRule;
+    det.check(&m);
+    assert!(det.tracking.scab_time_s.is_some() && det.tracking.scab_time_s == det.tracking.perforation_time_s);
+}
+
+/// Material pushed out of the back face ahead of the projectile, detached but moving no faster
+/// than the face (a plug carried at the projectile's speed when the face itself follows): it has
+/// left the target through the back face, so it is scab.
+#[test]
+fn a_detached_piece_past_the_back_face_is_a_scab_whatever_its_speed() {
+    let (mut m, det, lay) = small();
+    let target = range(&m, "target");
+    let plug = |e: usize| target.contains(&e) && m.el.initial[e][1] < 2.0 * M_PER_IN && (m.el.initial[e][0] - lay.impact_x_m).abs() < 2.0 * M_PER_IN;
+    let members: Vec<usize> = target.clone().filter(|&e| plug(e)).collect();
+    assert!(members.len() > 3);
+    let set: std::collections::HashSet<usize> = members.iter().copied().collect();
+    assert!(cut(&mut m, &|e| set.contains(&e)) > 0);
+    // Moved 3 in down, at rest: no separation speed, but its centre is past the back face.
+    for &e in &members {
+        m.state.pos[e][1] -= 3.0 * M_PER_IN;
+    }
+    let l = det.look(&m);
+    assert_eq!(l.scab.0, 1, "one plug, past the back face");
+    let mass: f64 = members.iter().map(|&e| m.el.mass[e]).sum();
+    assert!((l.scab.1 / mass - 1.0).abs() < 1e-12);
+    // Put back in place (detached, at rest): not a scab.
+    for &e in &members {
+        m.state.pos[e][1] += 3.0 * M_PER_IN;
+    }
+    assert_eq!(det.look(&m).scab.0, 0);
+}

@@ -16,6 +16,7 @@ pub mod fit;
 pub mod plot;
 pub mod schedule;
 pub mod thresholds;
+pub mod v50;
 
 use std::path::{Path, PathBuf};
 

@@ -13,12 +13,15 @@
 //! thickness against the beam's; the thickness itself only scales what is reported in pounds
 //! (scab and spall masses). The source fixes that mass through an "effective density" of its
 //! 351-element projectile (2.43e-3 lb·s²/in⁴, 3.3 times steel's), chosen "so that its total
-//! weight is 15 lb": a 15 lb projectile in a slice about 0.54 in thick. The default,
-//! `seed_effective_density`, keeps that density (so the source's calibration plays the same
-//! role here) and reports masses for the slice it implies. `sectional_density` instead gives
-//! the slice the 3D projectile's mass per presented area, W/(πD²/4) = W/(D t): t = πD/4 (a
-//! 2D projectile 4.8 times lighter per unit thickness than the source's); `thickness` takes a
-//! given slice thickness.
+//! weight is 15 lb": a 15 lb projectile in a slice about 0.59 in thick. `seed_effective_density`
+//! keeps that density and reports masses for the slice it implies; the weight then cannot act
+//! (the slice grows with it) and the calibration needs an effective tensile strength near
+//! 3.8 f'c to stop so dense a slice at 5 in. The default, `sectional_density`, gives the slice
+//! the 3D projectile's mass per presented area, W/(πD²/4) = W/(D t): t = πD/4 (a 2D projectile
+//! 4.8 times lighter per unit thickness than the source's), so weight, width, nose and length
+//! each act as they do on the 3D missile, and the calibrated strength stays within reach of
+//! what rate effects explain (README, "The 2D slice"). `thickness` takes a given slice
+//! thickness.
 
 use serde::{Deserialize, Serialize};
 
@@ -105,6 +108,16 @@ pub struct Target {
     /// Length held at each end, in ("cantilever-supported at both ends": both ends clamped).
     #[serde(default = "default_support")]
     pub support_length_in: f64,
+    /// How the beam's elements are packed: `irregular` (the default: a seeded random dense
+    /// packing, the counterpart of the source's megaclustered target, with no preferred crack
+    /// direction), `close_packed` (hexagonal: cracks run along its ±60° planes) or
+    /// `simple_cubic`.
+    #[serde(default = "default_arrangement")]
+    pub arrangement: Arrangement,
+    /// Seed of the irregular packing: each seed is another, equally likely target (a sweep over
+    /// packings varies it); ignored by the regular lattices.
+    #[serde(default = "default_packing_seed")]
+    pub seed: u64,
 }
 
 fn default_length() -> f64 {
@@ -116,10 +129,22 @@ fn default_depth() -> f64 {
 fn default_support() -> f64 {
     1.0
 }
+fn default_arrangement() -> Arrangement {
+    Arrangement::Irregular
+}
+fn default_packing_seed() -> u64 {
+    1
+}
 
 impl Default for Target {
     fn default() -> Self {
-        Target { length_in: default_length(), depth_in: default_depth(), support_length_in: default_support() }
+        Target {
+            length_in: default_length(),
+            depth_in: default_depth(),
+            support_length_in: default_support(),
+            arrangement: default_arrangement(),
+            seed: default_packing_seed(),
+        }
     }
 }
 
@@ -152,7 +177,10 @@ pub struct Concrete {
     /// source's calibration, `demsweep calibrate`).
     #[serde(default = "unit")]
     pub strength_factor: f64,
-    /// Strain-rate effects (seed §6): a table of constants, or `false` for none.
+    /// Strain-rate effects (seed §6): a table of constants, or `false` for none. The rate is
+    /// measured over `averaging_length_m` (default [`RATE_AVERAGING_LENGTH_IN`], set when the
+    /// table leaves it out; 0 takes each bond's own length, eq 6.7 as printed, which makes the
+    /// answer depend on the element size: `kernel::law::rate_field`).
     #[serde(default = "default_rate", with = "crate::scene::switch")]
     pub rate: Option<RateSpec>,
     /// Compaction (eq 6.11): a table of constants (defaults below), `true` for the defaults,
@@ -232,6 +260,12 @@ fn default_mu() -> f64 {
 fn unit() -> f64 {
     1.0
 }
+/// The length the concrete's strain rate is measured over, in: the width of concrete's fracture
+/// process zone, 2.7 maximum aggregate sizes (Bažant & Pijaudier-Cabot 1989) of the source's
+/// 0.75 in aggregate (`ballistic::thresholds::AGGREGATE_IN`). Level 0 (R = 0.5 in) resolves it
+/// with two elements across the grid spacing ℓ/2 ≈ 1 in.
+pub const RATE_AVERAGING_LENGTH_IN: f64 = 2.7 * 0.75;
+
 fn default_rate() -> Option<RateSpec> {
     Some(RateSpec::default())
 }
@@ -347,13 +381,27 @@ impl Default for ProjectileSpec {
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "snake_case")]
 pub enum MappingRule {
-    /// The source's effective projectile density (Table 7.2).
-    #[default]
+    /// The source's effective projectile density (Table 7.2). The slice is as thick as makes
+    /// the 2D projectile weigh `weight_lb`, so its mass per unit thickness, all the dynamics
+    /// see, is fixed by the density: the weight cannot act (refused unless the source's 15 lb).
     SeedEffectiveDensity,
-    /// The 3D projectile's mass per presented area: t = πD/4.
+    /// The 3D projectile's mass per presented area: t = πD/4 (the default: every projectile
+    /// field acts on the physics it names).
+    #[default]
     SectionalDensity,
     /// A given slice thickness.
     Thickness,
+}
+
+impl MappingRule {
+    /// The name a scene file uses.
+    pub fn name(self) -> &'static str {
+        match self {
+            MappingRule::SeedEffectiveDensity => "seed_effective_density",
+            MappingRule::SectionalDensity => "sectional_density",
+            MappingRule::Thickness => "thickness",
+        }
+    }
 }
 
 /// `[mapping]`.
@@ -519,6 +567,15 @@ impl PenetrationScene {
         {
             return Err(Error::input("projectile.impact_x_in", format!("must lie on the span (0, {}), got {x}", t.length_in)));
         }
+        if self.mapping.rule == MappingRule::SeedEffectiveDensity && p.weight_lb != seed::PROJECTILE_WEIGHT_LB {
+            return Err(Error::input(
+                "projectile.weight_lb",
+                format!(
+                    "{} lb cannot act under mapping.rule = \"seed_effective_density\": the slice thickness follows the weight, so the projectile's mass per unit thickness (all a 2D run sees) stays the source's; use rule = \"sectional_density\" (the default) or \"thickness\"",
+                    p.weight_lb
+                ),
+            ));
+        }
         if self.mapping.rule == MappingRule::Thickness {
             match self.mapping.thickness_in {
                 Some(v) => pos("mapping.thickness_in", v)?,
@@ -541,7 +598,12 @@ impl PenetrationScene {
     fn target_lattice(&self) -> Result<(lattice::Lattice, f64)> {
         let t = &self.target;
         let rect = Rect { x_min_m: 0.0, x_max_m: in_to_m(t.length_in), y_min_m: 0.0, y_max_m: in_to_m(t.depth_in) };
-        let l = lattice::close_packed(&rect, self.concrete_radius_m())?;
+        let r = self.concrete_radius_m();
+        let l = match t.arrangement {
+            Arrangement::Irregular => lattice::irregular(&rect, r, t.seed, lattice::IRREGULAR_BOND_GAP)?,
+            Arrangement::ClosePacked => lattice::close_packed(&rect, r)?,
+            Arrangement::SimpleCubic => lattice::simple_cubic(&rect, r)?,
+        };
         let front = l.centres.iter().map(|c| c[1]).fold(f64::NEG_INFINITY, f64::max) + l.radius_m;
         Ok((l, front))
     }
@@ -612,7 +674,7 @@ impl PenetrationScene {
             compressive_strength_pa: psi_to_pa(c.compressive_strength_psi),
             fracture_toughness_pa_sqrt_m: psi_sqrt_in_to_pa_sqrt_m(c.fracture_toughness_psi_sqrt_in) * c.strength_factor,
             friction_coefficient: c.friction_coefficient,
-            rate: c.rate,
+            rate: c.rate.map(|r| RateSpec { averaging_length_m: Some(r.averaging_length_m.unwrap_or(in_to_m(RATE_AVERAGING_LENGTH_IN))), ..r }),
             compaction: c.compaction.map(CompactionSpec::from),
             ..seed::concrete()
         };
@@ -650,12 +712,12 @@ impl PenetrationScene {
                 BodySpec {
                     name: "target".into(),
                     material: "concrete".into(),
-                    lattice: Arrangement::ClosePacked,
+                    lattice: t.arrangement,
                     element_radius_m: rc,
                     rect: Some(Rect { x_min_m: 0.0, x_max_m: length, y_min_m: 0.0, y_max_m: depth }),
                     shape: None,
                     velocity_mps: [0.0, 0.0],
-                    seed: 0,
+                    seed: t.seed,
                     bond_gap_ratio: None,
                     region: vec![],
                 },

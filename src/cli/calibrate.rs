@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use crate::calibrate::{Target, calibrate, calibrated_text};
+use crate::calibrate::{Target, Trial, calibrate, calibrated_text};
 use crate::error::{Error, Result};
 use crate::scene::SceneFile;
 
@@ -22,6 +22,10 @@ pub struct Args {
     /// The penetration scene to calibrate.
     #[arg(long, default_value = "sweeps/penetration_base.toml")]
     pub scene: PathBuf,
+    /// Packings whose mean depth is calibrated (an irregular target: its seed and the ones
+    /// after it).
+    #[arg(long, default_value_t = 3)]
+    pub packings: u32,
     /// Where to write the calibrated scene (default: `<scene stem>_calibrated.toml` beside it).
     #[arg(long)]
     pub out: Option<PathBuf>,
@@ -37,29 +41,32 @@ pub fn run(args: Args) -> Result<()> {
         let stem = args.scene.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();
         args.scene.with_file_name(format!("{stem}_calibrated.toml"))
     });
-    let target = Target { v0_fps: args.v0_fps, depth_in: args.depth_in, tolerance_in: args.tol_in, ..Target::seed() };
-    let mut each = |f: f64, r: &crate::penetration::Row| {
-        let o = &r.outcome;
-        eprintln!(
-            "factor {f:<12.6} depth {:.3} in, scabbed {}, perforated {}, {} ({} steps, {:.1} s)",
-            o.depth_in, o.scabbed, o.perforated, r.run.end_reason, r.run.steps, r.run.wall_s
-        );
+    let target = Target { v0_fps: args.v0_fps, depth_in: args.depth_in, tolerance_in: args.tol_in, packings: args.packings, ..Target::seed() };
+    let mut each = |t: &Trial| {
+        let depths: Vec<String> = t.rows.iter().map(|r| format!("{:.3}", r.outcome.depth_in)).collect();
+        let wall: f64 = t.rows.iter().map(|r| r.run.wall_s).sum();
+        eprintln!("factor {:<12.6} mean depth {:.3} in (packings: {} in; {:.1} s of runs)", t.factor, t.mean_depth_in, depths.join(", "), wall);
     };
     let c = calibrate(&scene, &target, &mut each)?;
-    let o = &c.row.outcome;
+    let t = &c.trial;
+    let seeds = t.rows.len() as u64;
+    let meaning = meaning(&scene, c.factor);
     let comment = format!(
-        "Calibrated by: demsweep calibrate --v0 {} --depth-in {} --tol-in {} --scene {}\n  strength_factor {} gives {:.3} in at {} ft/s (scabbed: {}, perforated: {}), after {} runs{}.",
+        "Calibrated by: demsweep calibrate --v0 {} --depth-in {} --tol-in {} --packings {} --scene {}\n  strength_factor {} gives a mean depth of {:.3} in at {} ft/s over {} packing(s) (seeds {}..={}: {} in), after {} factors{}.\n  {meaning}.",
         args.v0_fps,
         args.depth_in,
         args.tol_in,
+        args.packings,
         args.scene.display(),
         c.factor,
-        o.depth_in,
+        t.mean_depth_in,
         args.v0_fps,
-        o.scabbed,
-        o.perforated,
+        seeds,
+        scene.target.seed,
+        scene.target.seed + seeds - 1,
+        t.rows.iter().map(|r| format!("{:.3}", r.outcome.depth_in)).collect::<Vec<_>>().join(" / "),
         c.runs.len(),
-        if c.converged { "" } else { "; NOT within the tolerance (the closest run)" }
+        if c.converged { "" } else { "; NOT within the tolerance (the closest factor)" }
     );
     let text = std::fs::read_to_string(&args.scene).map_err(|e| Error::io(&args.scene, e))?;
     let written = calibrated_text(&text, c.factor, &comment);
@@ -69,9 +76,23 @@ pub fn run(args: Args) -> Result<()> {
         _ => return Err(Error::input("calibrate", "the calibrated scene does not read back with its factor")),
     }
     crate::table::write_atomic(&out, written.as_bytes())?;
-    println!("strength_factor = {} (depth {:.3} in at {} ft/s); written {}", c.factor, o.depth_in, args.v0_fps, out.display());
+    println!("strength_factor = {} (mean depth {:.3} in at {} ft/s); {meaning}; written {}", c.factor, t.mean_depth_in, args.v0_fps, out.display());
     if !c.converged {
-        return Err(Error::input("calibrate", format!("closest depth {:.3} in is outside ±{} in of {} in", o.depth_in, args.tol_in, args.depth_in)));
+        return Err(Error::input("calibrate", format!("closest mean depth {:.3} in is outside ±{} in of {} in", t.mean_depth_in, args.tol_in, args.depth_in)));
     }
     Ok(())
+}
+
+/// What the factor means: the effective static tensile strength and toughness it gives the
+/// concrete, beside f'c.
+fn meaning(scene: &crate::cases::penetration::PenetrationScene, factor: f64) -> String {
+    let c = &scene.concrete;
+    let sigma = factor * c.tensile_strength_psi;
+    format!(
+        "Effective static tensile strength {:.0} psi ({:.2} f'c), fracture toughness {:.0} psi·√in (mapping {})",
+        sigma,
+        sigma / c.compressive_strength_psi,
+        factor * c.fracture_toughness_psi_sqrt_in,
+        scene.mapping.rule.name()
+    )
 }

@@ -329,6 +329,16 @@ impl ModelBuilder {
             rebuilds: 0,
             local_updates: 0,
         };
+        let rate_field = {
+            // When a material measures its rate over a length, every element with a rate law
+            // is smoothed, over the shortest such length (a bond between two materials reads
+            // both ends from one field).
+            let rate = |k: u16| self.materials[self.kinds[k as usize].material].rate;
+            let ell = self.materials.iter().filter_map(|m| m.rate.and_then(|r| r.averaging_length())).fold(f64::INFINITY, f64::min);
+            let members: Vec<u32> =
+                if ell.is_finite() { (0..el.len()).filter(|&e| rate(el.kind[e]).is_some()).map(|e| e as u32).collect() } else { Vec::new() };
+            law::rate_field::RateField::new(members, &el.initial, el.len(), ell)
+        };
         let mut model = Model {
             el,
             classes,
@@ -353,6 +363,7 @@ impl ModelBuilder {
             record_contact_forces: false,
             scatter_piece_contacts: super::pieces::PIECE,
             four_lanes: true,
+            rate_field,
             state,
             scratch: Default::default(),
         };

@@ -51,6 +51,8 @@ pub struct Stage<'a> {
     /// Take the contacts four at a time where the parts and the processor allow ([`bonds4`],
     /// [`mixed4`]).
     pub four_lanes: bool,
+    /// The rate part's smoothed velocities per element, m/s (`law::rate_field`; empty: none).
+    pub rate_vel: &'a [[f64; 2]],
 }
 
 /// Where stage 1 puts the forces.
@@ -67,8 +69,8 @@ impl law::PartsVisitor for Stage<'_> {
     type Output = ();
     #[inline(never)]
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes } = self;
-        let at = &StepInput { pos, vel, dt_s, classes };
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes, rate_vel } = self;
+        let at = &StepInput { pos, vel, dt_s, classes, rate_vel };
         let four = four_lanes && lanes_apply::<P>();
         match out {
             // `four` only where `lanes_apply` found AVX.
@@ -117,6 +119,9 @@ struct StepInput<'a> {
     dt_s: f64,
     /// Contact classes.
     classes: &'a [ContactClass],
+    /// The rate part's smoothed velocities [vx, vy], m/s, per element (`law::rate_field`);
+    /// empty: each bond's rate reads its own pair's velocity.
+    rate_vel: &'a [[f64; 2]],
 }
 
 /// Several threads: each contact's force into `force`, chunk by chunk.
@@ -473,7 +478,14 @@ fn first_half<P: PartSet>(at: &StepInput<'_>, c: &Contact, x: &mut Extra) -> Ahe
     let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
         let g = along(at.vel, c, k, geometry::of(s));
-        Ahead::Bond(g, law::bond_ratios::<P>(x, k, &g))
+        // The rate reads the smoothed field where the model has one (`law::rate_field`).
+        let vn_rate = if P::RATE && !at.rate_vel.is_empty() {
+            let (a, b) = (at.rate_vel[c.i as usize], at.rate_vel[c.j as usize]);
+            (b[0] - a[0]) * g.nx + (b[1] - a[1]) * g.ny
+        } else {
+            g.vn_mps
+        };
+        Ahead::Bond(g, law::bond_ratios::<P>(x, k, vn_rate))
     } else if apart_with_nothing_to_forget(c, k, s.d2_m2) {
         Ahead::Nothing
     } else {

@@ -154,6 +154,9 @@ pub struct Model {
     /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
     /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
     pub four_lanes: bool,
+    /// The rate part's smoothed velocity field (`law::rate_field`): its grid is configuration,
+    /// its values are remade from the state at every step.
+    pub rate_field: law::rate_field::RateField,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
@@ -227,6 +230,7 @@ impl Model {
             s.contact_sums = vec![[0.0; 3]; n];
         }
         let st = &mut self.state;
+        self.rate_field.update(&st.pos, &st.vel, &self.el.mass);
         // On the pool: the plan made again if the pool or the cap changed (one thread needs
         // none).
         let rule = (rayon::current_num_threads(), self.scatter_piece_contacts);
@@ -252,6 +256,7 @@ impl Model {
             out,
             record: self.record_contact_forces,
             four_lanes: self.four_lanes,
+            rate_vel: &self.rate_field.vel_mps,
         };
         self.parts.dispatch(stage);
         for d in &s.diss_partial {
@@ -398,6 +403,7 @@ impl Model {
             out: forces::Out::Stored,
             record: true,
             four_lanes: self.four_lanes,
+            rate_vel: &self.rate_field.vel_mps,
         };
         Parts { damping: false, ..self.parts }.dispatch(stage);
         let s = &self.scratch;

@@ -11,11 +11,16 @@
 //!   largest over the run: what a crater gauge on a bending beam would read.
 //! * **fragment**: a connected set of target elements over intact bonds (a union-find), or a
 //!   single element, that holds no supported element.
-//! * **scabbing**: a fragment holding back-face material (elements that started within one
-//!   element diameter of the back face) moving away from the back face, i.e. downward faster
-//!   than the attached back face beside it (within one projectile width) by more than
-//!   `separation_fps`. Reported: the number of such fragments, their mass, and the first time
-//!   one was seen.
+//! * **scabbing**: material lost from the back face. A scab fragment is a fragment holding
+//!   back-face material (elements that started within one element diameter of the back face)
+//!   moving away from the back face, i.e. downward faster than the attached back face beside it
+//!   (within one projectile width) by more than `separation_fps`; or any fragment whose centre
+//!   has passed the original back face (material that left through it, ahead of or with the
+//!   projectile, whatever its speed). A perforation holes the back face, so a perforated run is
+//!   a scabbed run too, from its first look through at the latest, even when nothing came
+//!   loose (a beam split in two under the projectile): in any sweep the first scabbing is at or
+//!   below the first perforation. Reported: the number of scab fragments, their mass, and the
+//!   first time the back face lost material.
 //! * **front-face spall (crater)**: the same for front-face material moving up, away from the
 //!   front face.
 //! * **perforation**: the projectile's rearmost point below the original back face and below
@@ -55,13 +60,14 @@ pub struct Outcome {
     pub depth_rel_in: f64,
     /// When the peak depth was reached, s.
     pub depth_time_s: f64,
-    /// Scab fragments seen.
+    /// The back face lost material: scab fragments seen, or the projectile went through.
     pub scabbed: bool,
-    /// Their mass at the end, lb (per the mapping's slice).
+    /// The scab fragments' mass at the end, lb (per the mapping's slice).
     pub scab_mass_lb: f64,
     /// Their number at the end.
     pub scab_fragments: u64,
-    /// First time a scab was seen, s (empty: never).
+    /// First time the back face lost material (a scab fragment or the perforation), s
+    /// (empty: never).
     pub scab_time_s: Option<f64>,
     /// The projectile went through.
     pub perforated: bool,
@@ -146,6 +152,10 @@ impl Tracking {
         if l.through && self.perforation_time_s.is_none() {
             self.perforation_time_s = Some(l.time_s);
             self.v_residual_mps = l.speed_mps;
+        }
+        // A perforation holes the back face: scabbed by then at the latest.
+        if l.through && self.scab_time_s.is_none() {
+            self.scab_time_s = Some(l.time_s);
         }
         if l.attached_bonds != self.attached_bonds {
             self.attached_bonds = l.attached_bonds;
@@ -255,7 +265,8 @@ impl Detector {
         let (mut scab, mut spall) = ((0u64, 0.0), (0u64, 0.0));
         for f in frags.iter().filter(|f| !f.supported) {
             let (vy, x) = (f.velocity_mps()[1], f.centre_m()[0]);
-            if f.back && vy < face_speed(x, true) - sep {
+            let left_through_back = f.centre_m()[1] < lay.back_y_m;
+            if (f.back && vy < face_speed(x, true) - sep) || left_through_back {
                 scab = (scab.0 + 1, scab.1 + f.mass_kg);
             } else if f.front && vy > face_speed(x, false) + sep {
                 spall = (spall.0 + 1, spall.1 + f.mass_kg);
@@ -298,10 +309,10 @@ impl Detector {
             depth_in: t.depth_m.max(l.depth_m) / M_PER_IN,
             depth_rel_in: t.depth_rel_m.max(l.depth_m - l.deflection_m) / M_PER_IN,
             depth_time_s: if l.depth_m > t.depth_m { l.time_s } else { t.depth_time_s },
-            scabbed: t.scab_time_s.is_some() || l.scab.0 > 0,
+            scabbed: t.scab_time_s.is_some() || l.scab.0 > 0 || l.through,
             scab_mass_lb: kg_to_lb(l.scab.1),
             scab_fragments: l.scab.0,
-            scab_time_s: t.scab_time_s.or((l.scab.0 > 0).then_some(l.time_s)),
+            scab_time_s: t.scab_time_s.or((l.scab.0 > 0 || l.through).then_some(l.time_s)),
             perforated: t.perforation_time_s.is_some() || l.through,
             v_residual_fps: mps_to_fps(if t.perforation_time_s.is_some() { t.v_residual_mps } else if l.through { l.speed_mps } else { 0.0 }),
             perforation_time_s: t.perforation_time_s.or(l.through.then_some(l.time_s)),

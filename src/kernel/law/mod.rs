@@ -19,6 +19,7 @@ pub mod failure;
 pub mod friction;
 pub mod normal;
 pub mod rate;
+pub mod rate_field;
 pub mod tangential;
 
 use serde::{Deserialize, Serialize};
@@ -332,17 +333,19 @@ pub fn interact<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g:
 /// plateau, the failure rule, dashpots; springs and strengths scaled by the rate part.
 #[inline(always)]
 pub fn bonded<P: PartSet>(c: &mut Contact, x: &mut Extra, k: &ContactClass, g: &Kinematics, dt_s: f64, diss: &mut Dissipation) -> ContactForce {
-    let ratios = bond_ratios::<P>(x, k, g);
+    let ratios = bond_ratios::<P>(x, k, g.vn_mps);
     bonded_at::<P>(c, x, k, g, ratios, dt_s, diss)
 }
 
-/// The rate part's ratios for a bond at `g` ([`rate::STATIC`] without it), its rates updated:
-/// [`bonded`]'s first step, which reads only the kinematics and the rates, apart so that the
-/// contact loop can take it a few contacts ahead of the rest (`forces`).
+/// The rate part's ratios for a bond whose relative normal velocity, as the rate reads it, is
+/// `vn_rate_mps` (the pair's own, or the smoothed field's: `rate_field`) ([`rate::STATIC`]
+/// without it), its rates updated: [`bonded`]'s first step, which reads only the kinematics and
+/// the rates, apart so that the contact loop can take it a few contacts ahead of the rest
+/// (`forces`).
 #[inline(always)]
-pub fn bond_ratios<P: PartSet>(x: &mut Extra, k: &ContactClass, g: &Kinematics) -> rate::Ratios {
+pub fn bond_ratios<P: PartSet>(x: &mut Extra, k: &ContactClass, vn_rate_mps: f64) -> rate::Ratios {
     if P::RATE && k.rate.enabled {
-        k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(g.vn_mps, &mut x.vn_last_mps), 1.0 / x.length0_m)
+        k.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(vn_rate_mps, &mut x.vn_last_mps), 1.0 / x.length0_m)
     } else {
         rate::STATIC
     }

@@ -117,9 +117,16 @@ pub struct RateSpec {
     #[serde(default)]
     pub modulus_filter_s: Option<f64>,
     /// Highest rate a bond can see, 1/s (default: the fastest initial speed in the scene over
-    /// the bond's radius sum, the rate of the impact velocity over one element).
+    /// the bond's radius sum, the rate of the impact velocity over one element; over ℓ/2 with
+    /// an averaging length).
     #[serde(default)]
     pub cap_per_s: Option<f64>,
+    /// Length ℓ over which the strain rate is measured, m (`rate_field`): the bond's relative
+    /// velocity is read from the velocity field smoothed over ℓ, so the rate at a front is
+    /// Δv/ℓ at any element size. None or 0: the bond's own |v·n| / L0 (eq 6.7 as printed),
+    /// which grows as the elements shrink.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub averaging_length_m: Option<f64>,
 }
 
 fn default_alpha() -> f64 {
@@ -132,7 +139,15 @@ fn default_critical_time() -> f64 {
 
 impl Default for RateSpec {
     fn default() -> Self {
-        RateSpec { alpha: default_alpha(), critical_time_s: default_critical_time(), compressive: CompressiveRate::Ceb, memory_s: None, modulus_filter_s: None, cap_per_s: None }
+        RateSpec {
+            alpha: default_alpha(),
+            critical_time_s: default_critical_time(),
+            compressive: CompressiveRate::Ceb,
+            memory_s: None,
+            modulus_filter_s: None,
+            cap_per_s: None,
+            averaging_length_m: None,
+        }
     }
 }
 
@@ -153,7 +168,17 @@ impl RateSpec {
         if let Some(c) = self.cap_per_s {
             positive("cap_per_s", c)?;
         }
+        if let Some(l) = self.averaging_length_m
+            && !(l.is_finite() && l >= 0.0)
+        {
+            return Err(Error::input(format!("{prefix}.averaging_length_m"), format!("must be a finite length ≥ 0 m (0: the bond's own length), got {l}")));
+        }
         Ok(())
+    }
+
+    /// The averaging length ℓ, m, when the rate is measured over one (`rate_field`).
+    pub fn averaging_length(&self) -> Option<f64> {
+        self.averaging_length_m.filter(|&l| l > 0.0)
     }
 
     /// Memory τ of the held rate, s.
@@ -388,7 +413,12 @@ impl Params {
         let cap = match (ra.cap_per_s, rb.cap_per_s) {
             (Some(x), Some(y)) => x.min(y),
             (Some(x), None) | (None, Some(x)) => x,
-            (None, None) => (max_speed_mps / radius_sum_m).max(1.0),
+            // The steepest gradient a pair can read: the fastest speed over one bond, or over
+            // the smoothed field's grid spacing ℓ/2 when the rate is measured over ℓ.
+            (None, None) => match ra.averaging_length().or(rb.averaging_length()) {
+                Some(l) => (max_speed_mps / (0.5 * l)).max(1.0),
+                None => (max_speed_mps / radius_sum_m).max(1.0),
+            },
         };
         let f = |m: &crate::material::Material, s: &RateSpec, rate: f64| exact(rate, m.youngs_modulus_pa, m.tensile_strength_pa, m.compressive_strength_pa, s);
         let mut kinks = kinks_per_s(a.youngs_modulus_pa, a.tensile_strength_pa, &ra).to_vec();
