@@ -56,6 +56,7 @@ impl PartsVisitor for Both<'_> {
             out: Out::Stored,
             record: true,
             four_lanes: false,
+            rate_vel: &m.rate_field.vel_mps,
         };
         stage.visit::<P>();
 
@@ -69,7 +70,18 @@ impl PartsVisitor for Both<'_> {
             let k = &m.classes[c.class as usize];
             let d = &mut r_partial[e / CHUNK];
             r_force[e] = match forces::kinematics(pos, vel, c, k) {
-                Ok(g) if c.bond == Bond::Intact => law::bonded::<P>(c, x, k, &g, dt_s, d),
+                Ok(g) if c.bond == Bond::Intact => {
+                    // The rate reads the smoothed field where the model has one (`rate_field`).
+                    let rv = &m.rate_field.vel_mps;
+                    let vn = if rv.is_empty() {
+                        g.vn_mps
+                    } else {
+                        let (a, b) = (rv[c.i as usize], rv[c.j as usize]);
+                        (b[0] - a[0]) * g.nx + (b[1] - a[1]) * g.ny
+                    };
+                    let ratios = law::bond_ratios::<P>(x, k, vn);
+                    law::bonded_at::<P>(c, x, k, &g, ratios, dt_s, d)
+                }
                 Ok(g) => law::friction::touching::<P>(c, k, &g, dt_s, d),
                 Err(d2_m2) => {
                     law::friction::apart(c, k, d2_m2, d);

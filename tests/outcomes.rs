@@ -12,6 +12,8 @@ use demsweep::units::M_PER_IN;
 fn small() -> (Model, Detector, Layout) {
     let mut s = PenetrationScene::with_name("outcomes");
     s.penetration.level = 0;
+    // The definitions are about states built by hand in rows of the regular lattice.
+    s.target.arrangement = demsweep::material::Arrangement::ClosePacked;
     s.target.length_in = 24.0;
     s.target.depth_in = 6.0;
     s.projectile.standoff_in = 1.0;

@@ -15,6 +15,8 @@ use demsweep::units::{M_PER_IN, fps_to_mps};
 fn scene(length_in: f64, depth_in: f64, v0_fps: f64) -> PenetrationScene {
     let mut s = PenetrationScene::with_name("hard");
     s.penetration.level = 0;
+    // Rows of the regular lattice (one element thick means one row).
+    s.target.arrangement = demsweep::material::Arrangement::ClosePacked;
     s.target.length_in = length_in;
     s.target.depth_in = depth_in;
     s.projectile.v0_fps = v0_fps;
