@@ -4,7 +4,7 @@
 #
 #   scripts/penetration_table.sh SCENE OUT.csv V1 V2 ...
 #
-# scripts/penetration_ci_table.sh and scripts/penetration_sweep.sh call it.
+# scripts/penetration_ci_table.sh calls it.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1; out=$2; shift 2

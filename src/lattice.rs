@@ -121,11 +121,12 @@ pub fn close_packed(rect: &Rect, radius_m: f64) -> Result<Lattice> {
     Ok(Lattice { centres, radius_m: r, area_per_element_m2: 2.0 * 3f64.sqrt() * r * r, bonds })
 }
 
-/// SplitMix64: a tiny, well-tested generator, pinned here so a seed means the same mesh forever.
-struct SplitMix64(u64);
+/// SplitMix64 (Steele, Lea & Flood 2014): a tiny, well-tested generator, pinned here so a seed
+/// means the same mesh forever (the crate's one seeded generator).
+pub(crate) struct SplitMix64(pub(crate) u64);
 
 impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
+    pub(crate) fn next_u64(&mut self) -> u64 {
         self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
         let mut z = self.0;
         z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
@@ -133,7 +134,8 @@ impl SplitMix64 {
         z ^ (z >> 31)
     }
 
-    fn unit(&mut self) -> f64 {
+    /// Uniform in [0, 1) with 53 random bits.
+    pub(crate) fn unit(&mut self) -> f64 {
         (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
     }
 }

@@ -13,10 +13,6 @@ use demsweep::material::{Arrangement, Plane};
 
 const R: f64 = 0.005;
 
-fn relaxed_patch(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_pa: f64) -> (Model, Vec<usize>, f64) {
-    relaxed_patch_sized(e, nu, plane, arrangement, sigma_pa, 80.0, 1)
-}
-
 /// A square patch of side `size_r` element radii; `seed` for the irregular packing.
 fn relaxed_patch_sized(e: f64, nu: f64, plane: Plane, arrangement: Arrangement, sigma_pa: f64, size_r: f64, seed: u64) -> (Model, Vec<usize>, f64) {
     let (w, h) = (size_r * R, size_r * R);

@@ -87,9 +87,11 @@ fn a_fragment_flying_off_the_back_is_a_scab_with_its_mass() {
     assert_eq!(l.scab.0, 1, "one scab fragment");
     assert!((l.scab.1 - mass).abs() <= 1e-12 * mass, "scab mass {} kg, lump {} kg", l.scab.1, mass);
     assert_eq!(l.spall.0, 0);
-    // Moving back up into the beam is not scabbing.
+    // In its place and moving up into the beam, it is not scabbing (past the back face it
+    // would be, whatever its speed: it has left the target).
     for &e in &members {
         m.state.vel[e][1] = 10.0;
+        m.state.pos[e][1] += 3.0 * M_PER_IN;
     }
     assert_eq!(det.look(&m).scab.0, 0);
 }
@@ -209,6 +211,7 @@ fn look(t: f64, v: f64, attached_bonds: u64) -> Look {
         through: false,
         clear: false,
         v_axial_mps: v,
+        v_face_mps: v,
         speed_mps: v.abs(),
         attached_bonds,
     }

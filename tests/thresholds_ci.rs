@@ -34,6 +34,7 @@ fn the_ci_sweep_reproduces_its_committed_thresholds() {
         quiet: true,
         fresh: false,
         shard: None,
+        packings: m.packings,
     };
     let report = run(&plan).unwrap();
     let live_runs = Table::read_csv(&out.join("runs.csv")).unwrap();

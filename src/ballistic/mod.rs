@@ -6,6 +6,11 @@
 //! as a second estimate of the ballistic limit; the empirical formulas' thresholds for the same
 //! wall beside them (`thresholds.csv`); a picture.
 //!
+//! **Packings** (`--packings N`, an irregular target): the grid and both bisections on each of
+//! the scene's seed and the N − 1 after it, and per threshold a V50 over every run's binary
+//! outcome (`v50`: logistic, Firth-penalised maximum likelihood, 90 % profile-likelihood
+//! interval), as ballistic testing reports a limit: one packing is one specimen.
+//!
 //! Resumable: the runs table is the state. A rerun with the same arguments finds every
 //! finished run (grid or bisection: the bisection's velocities follow from the runs, so they
 //! are the same again) and ends with the same tables. `--shard i/n` runs every n-th grid
@@ -53,6 +58,13 @@ pub struct Manifest {
     pub tol_fps: f64,
     /// `i/n`, or empty for the whole sweep.
     pub shard: String,
+    /// Packings swept (1: the scene's own).
+    #[serde(default = "one_packing")]
+    pub packings: u32,
+}
+
+fn one_packing() -> u32 {
+    1
 }
 
 /// A shard `i/n`: the grid velocities k with k mod n = i − 1.
@@ -89,6 +101,39 @@ pub struct Plan {
     pub fresh: bool,
     /// Run one shard of the grid only (no bisection).
     pub shard: Option<(usize, usize)>,
+    /// Packings (target seeds from the scene's on) to sweep; 1: the scene's own.
+    pub packings: u32,
+}
+
+/// The default number of packings for a scene file: 5 on an irregular target, 1 on a regular
+/// lattice (it has one).
+pub fn default_packings(scene: &Path) -> Result<u32> {
+    Ok(match &load_base(scene)?.scene {
+        SceneFile::Penetration(p) if p.target.arrangement == crate::material::Arrangement::Irregular => 5,
+        _ => 1,
+    })
+}
+
+/// The field that picks a packing.
+pub const SEED_FIELD: &str = "target.seed";
+
+/// Each packing's overrides: none for one packing (the scene's own), else `target.seed` from
+/// the scene's seed on. More than one packing needs an irregular target.
+pub fn packing_overrides(base: &Base, packings: u32) -> Result<Vec<Vec<Override>>> {
+    let SceneFile::Penetration(scene) = &base.scene else { unreachable!("checked at load") };
+    if packings == 0 {
+        return Err(Error::input("--packings", "must be ≥ 1"));
+    }
+    if packings == 1 {
+        return Ok(vec![Vec::new()]);
+    }
+    if scene.target.arrangement != crate::material::Arrangement::Irregular {
+        return Err(Error::input("--packings", format!("{packings} packings need target.arrangement = \"irregular\": a regular lattice has one packing")));
+    }
+    let first = scene.target.seed;
+    Ok((0..packings as u64)
+        .map(|k| vec![Override { field: SEED_FIELD.into(), value: toml::Value::Integer((first + k) as i64) }])
+        .collect())
 }
 
 /// A velocity as the override value (an integer where it is one, so run ids read `850`).
@@ -118,6 +163,38 @@ pub struct Report {
     pub ran: usize,
     /// Runs found done.
     pub skipped: usize,
+    /// With several packings: each one's seed and bisected thresholds.
+    pub packings: Vec<Packing>,
+    /// With several packings: the V50 of scabbing and of perforation.
+    pub v50: Option<(Option<v50::V50>, Option<v50::V50>)>,
+}
+
+/// One packing's thresholds.
+#[derive(Debug, Clone)]
+pub struct Packing {
+    /// Its seed.
+    pub seed: i64,
+    /// Scabbing.
+    pub scabbing: Finding,
+    /// Perforation.
+    pub perforation: Finding,
+}
+
+impl Report {
+    fn empty(ran: usize, skipped: usize) -> Report {
+        let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
+        Report {
+            scabbing: empty.clone(),
+            perforation: empty,
+            lambert_jonas: None,
+            recht_ipson: None,
+            thresholds: Table::default(),
+            ran,
+            skipped,
+            packings: Vec::new(),
+            v50: None,
+        }
+    }
 }
 
 fn load_base(scene: &Path) -> Result<Base> {
@@ -151,27 +228,33 @@ pub fn run(plan: &Plan) -> Result<Report> {
         step_fps: plan.step_fps,
         tol_fps: plan.tol_fps,
         shard: plan.shard.map_or(String::new(), |(i, n)| format!("{i}/{n}")),
+        packings: plan.packings,
     };
+    let packings = packing_overrides(&base, plan.packings)?;
     let mut store = Store::open(&plan.out, &base, plan.fresh)?;
     write_atomic(&plan.out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
     let engine = Engine::new(&base, plan.threads, plan.quiet);
-    let jobs: Vec<Job> = grid
-        .iter()
+    let jobs: Vec<Job> = grid_jobs(&grid, &packings)
+        .into_iter()
         .enumerate()
         .filter(|(k, _)| plan.shard.is_none_or(|(i, n)| k % n == i - 1))
-        .map(|(_, &v)| job(v, "grid"))
+        .map(|(_, j)| j)
         .collect();
     let done = engine.run(&jobs, &mut store)?;
     done.check()?;
     let (mut ran, mut skipped) = (done.ran, done.skipped);
     if plan.shard.is_some() {
-        let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
-        return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran, skipped });
+        return Ok(Report::empty(ran, skipped));
     }
-    let report = bisect_and_report(&engine, &mut store, &grid, plan.tol_fps, &plan.out)?;
+    let report = bisect_and_report(&engine, &mut store, &grid, &packings, plan.tol_fps, &plan.out)?;
     ran += report.ran;
     skipped += report.skipped;
     Ok(Report { ran, skipped, ..report })
+}
+
+/// Every packing's grid runs, packing by packing.
+fn grid_jobs(grid: &[f64], packings: &[Vec<Override>]) -> Vec<Job> {
+    packings.iter().flat_map(|fixed| grid.iter().map(|&v| schedule::job_with(fixed, v, "grid"))).collect()
 }
 
 /// The points of every planned run held by `store`.
@@ -185,50 +268,84 @@ fn points(store: &Store, planned: &[Job], column: &str) -> Vec<Point> {
         .collect()
 }
 
-/// Bisect both thresholds from the grid's runs, fit, and write `thresholds.csv` and the plot.
-pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], tol_fps: f64, out: &Path) -> Result<Report> {
-    let mut planned: Vec<Job> = grid.iter().map(|&v| job(v, "grid")).collect();
+/// Bisect both thresholds of every packing from the grid's runs, fit, and write
+/// `thresholds.csv` and the plot.
+pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], packings: &[Vec<Override>], tol_fps: f64, out: &Path) -> Result<Report> {
+    let mut planned = grid_jobs(grid, packings);
     if let Some(missing) = planned.iter().find(|j| !store.has(j)) {
         return Err(Error::input(out.display().to_string(), format!("the grid run {} is missing: run every shard first", missing.id())));
     }
-    // The two bisections run side by side on the engine's threads (`schedule`), each bracket
-    // read from the grid and its own runs only, so that its sequence of velocities — and the
-    // tables — do not depend on which run finished first.
-    let chains = vec![
-        schedule::Chain::new("scabbed", "bisect scabbing", points(store, &planned, "scabbed")),
-        schedule::Chain::new("perforated", "bisect perforation", points(store, &planned, "perforated")),
-    ];
+    // Two bisections a packing, all side by side on the engine's threads (`schedule`), each
+    // bracket read from its packing's grid and its own runs only, so that its sequence of
+    // velocities — and the tables — do not depend on which run finished first.
+    let grid_of = |fixed: &Vec<Override>| -> Vec<Job> { grid.iter().map(|&v| schedule::job_with(fixed, v, "grid")).collect() };
+    let mut chains = Vec::new();
+    for fixed in packings {
+        let mine = grid_of(fixed);
+        chains.push(schedule::Chain::new("scabbed", "bisect scabbing", points(store, &mine, "scabbed")).with_fixed(fixed.clone()));
+        chains.push(schedule::Chain::new("perforated", "bisect perforation", points(store, &mine, "perforated")).with_fixed(fixed.clone()));
+    }
     let level = engine.base.level();
     let mut book = Kept { store: &mut *store, level: &level };
     let make = |j: &Job, wanted: &std::sync::atomic::AtomicBool| engine.run_one(j, wanted);
     let (chains, tally) = schedule::bisect(chains, &mut book, tol_fps, engine.thread_count(), engine.quiet, &make)?;
     let (ran, skipped) = (tally.ran, tally.skipped);
-    let own = |c: &schedule::Chain| -> Vec<Job> { planned.iter().chain(&c.runs).cloned().collect() };
-    let (own_s, own_p) = (own(&chains[0]), own(&chains[1]));
     for j in chains.iter().flat_map(|c| &c.runs) {
         if !planned.iter().any(|k| k.id() == j.id()) {
             planned.push(j.clone());
         }
     }
-    // Each threshold's bracket from its own bisection; runs of the other that contradict it
+    // Each threshold's bracket from its own bisection; runs of its packing that contradict it
     // (an outcome missing above its first appearance) are reported as non-monotone.
-    let finding = |own: &[Job], column: &str| {
-        let mut f = bracket::find(&points(store, own, column));
-        f.exceptions_fps = bracket::find(&points(store, &planned, column)).exceptions_fps;
-        f
-    };
-    let scabbing = finding(&own_s, "scabbed");
-    let perforation = finding(&own_p, "perforated");
+    let mut found = Vec::new();
+    for (fixed, pair) in packings.iter().zip(chains.chunks(2)) {
+        let same_packing: Vec<Job> = planned.iter().filter(|j| j.overrides[..j.overrides.len() - 1] == fixed[..]).cloned().collect();
+        let finding = |c: &schedule::Chain| {
+            let own: Vec<Job> = grid_of(fixed).into_iter().chain(c.runs.iter().cloned()).collect();
+            let mut f = bracket::find(&points(store, &own, &c.column));
+            f.exceptions_fps = bracket::find(&points(store, &same_packing, &c.column)).exceptions_fps;
+            f
+        };
+        let seed = fixed.first().and_then(|o| o.value.as_integer()).unwrap_or_default();
+        found.push(Packing { seed, scabbing: finding(&pair[0]), perforation: finding(&pair[1]) });
+    }
+    let several = packings.len() > 1;
+    let v50 = several.then(|| {
+        let runs = |column: &str| -> Vec<(f64, bool)> { points(store, &planned, column).iter().map(|p| (p.v_fps, p.hit)).collect() };
+        (v50::fit(&runs("scabbed"), v50::LEVEL), v50::fit(&runs("perforated"), v50::LEVEL))
+    });
+    // The perforation bracket over every packing bounds the ballistic limit of the fits.
+    let (scabbing, perforation) = if several { (span(found.iter().map(|p| &p.scabbing)), span(found.iter().map(|p| &p.perforation))) } else { (found[0].scabbing.clone(), found[0].perforation.clone()) };
     let (lambert_jonas, recht_ipson) = fits(store, &planned, &perforation);
     let SceneFile::Penetration(scene) = &engine.base.scene else { unreachable!("checked at load") };
     let formulas = thresholds::empirical(scene)?;
     let counts = (points(store, &planned, "scabbed").len(), points(store, &planned, "perforated").len());
-    let ours = thresholds::Ours { scabbing: &scabbing, perforation: &perforation, lambert_jonas, recht_ipson };
+    let ours = thresholds::Ours { scabbing: &scabbing, perforation: &perforation, lambert_jonas, recht_ipson, packings: if several { &found } else { &[] }, v50: v50.as_ref() };
     let table = thresholds::table(&ours, &formulas, counts);
     table.write_csv(&out.join("thresholds.csv"))?;
     let runs = store.table();
     plot::draw(&out.join("ballistic.png"), &runs, &ours, &formulas, grid)?;
-    Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped })
+    Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped, packings: if several { found } else { Vec::new() }, v50 })
+}
+
+/// The bracket that holds every packing's: from the lowest velocity without the outcome to the
+/// highest first velocity with it, and every packing's exceptions.
+fn span<'a>(findings: impl Iterator<Item = &'a Finding>) -> Finding {
+    let (mut lo, mut hi, mut ex, mut all_between) = (f64::INFINITY, f64::NEG_INFINITY, Vec::new(), true);
+    for f in findings {
+        match f.bracket {
+            Bracket::Between { lo_fps, hi_fps } => {
+                lo = lo.min(lo_fps);
+                hi = hi.max(hi_fps);
+            }
+            _ => all_between = false,
+        }
+        ex.extend(f.exceptions_fps.iter().copied());
+    }
+    ex.sort_by(f64::total_cmp);
+    ex.dedup();
+    let bracket = if all_between && lo <= hi { Bracket::Between { lo_fps: lo, hi_fps: hi } } else { Bracket::Empty };
+    Finding { bracket, exceptions_fps: ex }
 }
 
 /// The runs table as the bisections' book: a run is kept with the scene's level.
@@ -288,7 +405,12 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
     for d in dirs {
         let m = read_manifest(d)?;
         let same = |a: &Manifest, b: &Manifest| {
-            a.scene_hash == b.scene_hash && a.v0_min_fps == b.v0_min_fps && a.v0_max_fps == b.v0_max_fps && a.step_fps == b.step_fps && a.tol_fps == b.tol_fps
+            a.scene_hash == b.scene_hash
+                && a.v0_min_fps == b.v0_min_fps
+                && a.v0_max_fps == b.v0_max_fps
+                && a.step_fps == b.step_fps
+                && a.tol_fps == b.tol_fps
+                && a.packings == b.packings
         };
         if m.scene_hash != first.scene_hash {
             return Err(Error::input(
@@ -297,7 +419,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
             ));
         }
         if !same(&m, &first) {
-            return Err(Error::input(d.display().to_string(), format!("was swept over another grid or tolerance than {}", dirs[0].display())));
+            return Err(Error::input(d.display().to_string(), format!("was swept over another grid, tolerance or set of packings than {}", dirs[0].display())));
         }
         let s = Store::read(d)?;
         match merged.as_mut() {
@@ -318,16 +440,16 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
         store.absorb(Store::read(out)?)?;
     }
     let grid = velocities(first.v0_min_fps, first.v0_max_fps, first.step_fps)?;
-    let missing: Vec<String> = grid.iter().map(|&v| job(v, "grid")).filter(|j| !store.has(j)).map(|j| j.id()).collect();
+    let packings = packing_overrides(&base, first.packings)?;
+    let missing: Vec<String> = grid_jobs(&grid, &packings).into_iter().filter(|j| !store.has(j)).map(|j| j.id()).collect();
     if !missing.is_empty() {
         return Err(Error::input("merge", format!("the shards miss grid runs {}: run every shard first", missing.join(", "))));
     }
     store.write()?;
     let manifest = Manifest { shard: String::new(), ..first.clone() };
     write_atomic(&out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
-    let empty = Finding { bracket: Bracket::Empty, exceptions_fps: Vec::new() };
     if !bisect {
-        return Ok(Report { scabbing: empty.clone(), perforation: empty, lambert_jonas: None, recht_ipson: None, thresholds: Table::default(), ran: 0, skipped: store.len() });
+        return Ok(Report::empty(0, store.len()));
     }
     if store.build != build_id() {
         // The bisection's runs would be this build's, beside grid runs of another.
@@ -341,5 +463,5 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
         ));
     }
     let engine = Engine::new(&base, threads, quiet);
-    bisect_and_report(&engine, &mut store, &grid, first.tol_fps, out)
+    bisect_and_report(&engine, &mut store, &grid, &packings, first.tol_fps, out)
 }

@@ -1,6 +1,7 @@
 //! `ballistic.png`: penetration depth (left) and residual velocity (right) against impact
 //! velocity, every run a point (scabbed runs amber, perforated red), our two thresholds as
-//! vertical lines, the empirical formulas' bands shaded, and the Lambert–Jonas and Recht–Ipson
+//! vertical lines (with several packings: the V50s with their 90 % intervals shaded, and each
+//! packing's bisected threshold a tick at the top), the empirical formulas' bands shaded, and the Lambert–Jonas and Recht–Ipson
 //! curves over the perforating runs.
 
 use std::path::Path;
@@ -87,6 +88,33 @@ fn thresholds(
     ours: &Ours<'_>,
     y_max: f64,
 ) -> AreaResult {
+    if let Some((scab, perf)) = ours.v50 {
+        // Several packings: each threshold's V50, its 90 % interval hatched, each packing's
+        // bisected threshold a short tick at the top.
+        for (name, v, color) in [("scabbing", scab, SCAB), ("perforation", perf, PERF)] {
+            let Some(v) = v else { continue };
+            let (lo, hi) = (v.lower_fps.unwrap_or(f64::NEG_INFINITY), v.upper_fps.unwrap_or(f64::INFINITY));
+            chart.draw_series([Rectangle::new([(lo.max(chart.x_range().start), 0.0), (hi.min(chart.x_range().end), y_max)], color.mix(0.25).filled())])?;
+            chart
+                .draw_series(LineSeries::new([(v.v50_fps, 0.0), (v.v50_fps, y_max)], color.stroke_width(3)))?
+                .label(format!(
+                    "demsweep {name} V50 {:.0} ft/s, 90 % {}–{} ({} packings)",
+                    v.v50_fps,
+                    v.lower_fps.map_or("?".into(), |x| format!("{x:.0}")),
+                    v.upper_fps.map_or("?".into(), |x| format!("{x:.0}")),
+                    ours.packings.len()
+                ))
+                .legend(move |(x, y)| PathElement::new([(x, y), (x + 20, y)], color.stroke_width(3)));
+        }
+        for p in ours.packings {
+            for (f, color) in [(&p.scabbing, SCAB), (&p.perforation, PERF)] {
+                if let Some(v) = f.estimate_fps() {
+                    chart.draw_series(LineSeries::new([(v, 0.93 * y_max), (v, y_max)], color.stroke_width(2)))?;
+                }
+            }
+        }
+        return Ok(());
+    }
     let lines: [(&str, &Finding, RGBColor); 2] = [("scabbing", ours.scabbing, SCAB), ("perforation", ours.perforation, PERF)];
     for (name, f, color) in lines {
         if let Some(v) = f.estimate_fps() {

@@ -23,6 +23,7 @@ use std::time::Instant;
 use super::bracket::{self, Point};
 use super::job;
 use crate::error::{Error, Result};
+use crate::scene::overrides::Override;
 pub use crate::sweep::Row;
 use crate::sweep::Job;
 
@@ -39,6 +40,8 @@ pub trait Book: Send {
 /// One bisection.
 #[derive(Debug, Clone)]
 pub struct Chain {
+    /// The overrides its runs share besides the velocity (a packing's `target.seed`).
+    pub fixed: Vec<Override>,
     /// The outcome it brackets (`scabbed`, `perforated`).
     pub column: String,
     /// Its runs' purpose (`bisect scabbing`).
@@ -52,8 +55,36 @@ pub struct Chain {
 impl Chain {
     /// A chain starting from the grid's points.
     pub fn new(column: &str, purpose: &str, grid: Vec<Point>) -> Chain {
-        Chain { column: column.into(), purpose: purpose.into(), points: grid, runs: Vec::new() }
+        Chain { fixed: Vec::new(), column: column.into(), purpose: purpose.into(), points: grid, runs: Vec::new() }
     }
+
+    /// The same chain with its runs sharing `fixed` overrides.
+    pub fn with_fixed(self, fixed: Vec<Override>) -> Chain {
+        Chain { fixed, ..self }
+    }
+
+    /// Its run at `v_fps`, ft/s.
+    pub fn job(&self, v_fps: f64, purpose: &str) -> Job {
+        job_with(&self.fixed, v_fps, purpose)
+    }
+}
+
+/// A run at `v_fps` with the overrides `fixed` before the velocity.
+pub fn job_with(fixed: &[Override], v_fps: f64, purpose: &str) -> Job {
+    let mut j = job(v_fps, purpose);
+    j.overrides.splice(0..0, fixed.iter().cloned());
+    j
+}
+
+/// A run some chain may still need.
+#[derive(Debug, Clone)]
+struct Want {
+    /// The run (no purpose yet).
+    job: Job,
+    /// Its velocity, ft/s.
+    v_fps: f64,
+    /// The chance it is needed.
+    p: f64,
 }
 
 /// What the schedule did.
@@ -135,7 +166,7 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
             signal.notify_all();
             return;
         }
-        let Some((id, v, chance)) = st.pick(&wants) else {
+        let Some((id, template, chance)) = st.pick(&wants) else {
             st = signal.wait(st).unwrap_or_else(|e| e.into_inner());
             continue;
         };
@@ -145,7 +176,7 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
         st.tally.guesses += usize::from(guess);
         drop(st);
         let t0 = Instant::now();
-        let made = make(&job(v, if guess { "guess" } else { "bisect" }), &flag);
+        let made = make(&Job { purpose: if guess { "guess" } else { "bisect" }.into(), ..template.clone() }, &flag);
         let secs = t0.elapsed().as_secs_f64();
         st = lock();
         st.flight.remove(&id);
@@ -153,7 +184,7 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
             if !quiet {
                 let what = if guess { format!("guess, p = {chance:.2}") } else { "bisect".into() };
                 let outcome = made.as_ref().map_or_else(|e| format!("failed: {e}"), |r| crate::sweep::progress::outcome(r));
-                eprintln!("[{what}] {}: {outcome}  ({secs:.1} s)", job(v, "").id());
+                eprintln!("[{what}] {id}: {outcome}  ({secs:.1} s)");
             }
             st.made.insert(id, (made, secs));
         } else if guess {
@@ -161,7 +192,7 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
             st.tally.guesses_lost += 1;
             st.tally.lost_s += secs;
             if !quiet {
-                eprintln!("[guess] {}: not needed, ended after {secs:.1} s", job(v, "").id());
+                eprintln!("[guess] {id}: not needed, ended after {secs:.1} s");
             }
         }
         signal.notify_all();
@@ -169,14 +200,13 @@ fn worker(state: &Mutex<State<'_>>, signal: &Condvar, tol_fps: f64, quiet: bool,
 }
 
 impl State<'_> {
-    /// The outcome `column` of the run at `v` if known: made here or kept in the book.
-    fn known(&self, v: f64, column: &str) -> Result<Option<bool>> {
-        let j = job(v, "");
+    /// The outcome `column` of the run `j` if known: made here or kept in the book.
+    fn known(&self, j: &Job, column: &str) -> Result<Option<bool>> {
         match self.made.get(&j.id()) {
             Some((Ok(row), _)) => Ok(row.iter().find(|(k, _)| k == column).map(|(_, x)| x == "true")),
             // A failed run's outcome is not known; the chain that needs it reports the error.
             Some((Err(_), _)) => Ok(None),
-            None => self.book.outcome(&j, column),
+            None => self.book.outcome(j, column),
         }
     }
 
@@ -187,7 +217,7 @@ impl State<'_> {
             loop {
                 let chain = &self.chains[c];
                 let Some(v) = bracket::find(&chain.points).next(tol_fps) else { break };
-                let j = job(v, &chain.purpose);
+                let j = chain.job(v, &chain.purpose);
                 match self.made.remove(&j.id()) {
                     Some((Ok(row), _)) => {
                         self.book.keep(&j, Some(&row))?;
@@ -213,14 +243,14 @@ impl State<'_> {
     /// chain's next run has chance 1; each run in flight is taken as even odds either way, and
     /// chains as independent (a run needed by one chain with chance a and by the other with b
     /// is needed with 1 − (1 − a)(1 − b)).
-    fn wants(&self, tol_fps: f64) -> Result<HashMap<String, (f64, f64)>> {
-        let mut all: HashMap<String, (f64, f64)> = HashMap::new();
+    fn wants(&self, tol_fps: f64) -> Result<HashMap<String, Want>> {
+        let mut all: HashMap<String, Want> = HashMap::new();
         for c in &self.chains {
             let mut mine = HashMap::new();
-            self.grow(&mut c.points.clone(), &c.column, 1.0, tol_fps, &mut mine)?;
-            for (id, (v, p)) in mine {
-                let e = all.entry(id).or_insert((v, 0.0));
-                e.1 = 1.0 - (1.0 - e.1) * (1.0 - p);
+            self.grow(c, &mut c.points.clone(), 1.0, tol_fps, &mut mine)?;
+            for (id, w) in mine {
+                let e = all.entry(id).or_insert(Want { p: 0.0, ..w.clone() });
+                e.p = 1.0 - (1.0 - e.p) * (1.0 - w.p);
             }
         }
         Ok(all)
@@ -228,11 +258,13 @@ impl State<'_> {
 
     /// The runs one chain may need from `points` on, reached with chance `p` (the branches of a
     /// chain exclude each other: their chances add).
-    fn grow(&self, points: &mut Vec<Point>, column: &str, p: f64, tol_fps: f64, out: &mut HashMap<String, (f64, f64)>) -> Result<()> {
+    fn grow(&self, chain: &Chain, points: &mut Vec<Point>, p: f64, tol_fps: f64, out: &mut HashMap<String, Want>) -> Result<()> {
         let Some(v) = bracket::find(points).next(tol_fps) else { return Ok(()) };
-        let id = job(v, "").id();
-        out.entry(id.clone()).or_insert((v, 0.0)).1 += p;
-        let branches: &[(bool, f64)] = match self.known(v, column)? {
+        let j = chain.job(v, "");
+        let id = j.id();
+        let known = self.known(&j, &chain.column)?;
+        out.entry(id.clone()).or_insert(Want { job: j, v_fps: v, p: 0.0 }).p += p;
+        let branches: &[(bool, f64)] = match known {
             Some(true) => &[(true, 1.0)],
             Some(false) => &[(false, 1.0)],
             None if self.flight.contains_key(&id) => &[(true, 0.5), (false, 0.5)],
@@ -240,7 +272,7 @@ impl State<'_> {
         };
         for &(hit, share) in branches {
             points.push(Point { v_fps: v, hit });
-            let grown = self.grow(points, column, p * share, tol_fps, out);
+            let grown = self.grow(chain, points, p * share, tol_fps, out);
             points.pop();
             grown?;
         }
@@ -248,7 +280,7 @@ impl State<'_> {
     }
 
     /// Runs in flight that no chain can need any more are told to end; made ones are dropped.
-    fn rule_out(&mut self, wants: &HashMap<String, (f64, f64)>) {
+    fn rule_out(&mut self, wants: &HashMap<String, Want>) {
         for (id, flag) in &self.flight {
             if !wants.contains_key(id) {
                 flag.store(false, Ordering::SeqCst);
@@ -262,17 +294,17 @@ impl State<'_> {
         }
     }
 
-    /// The likeliest needed run nobody is making and nobody has made: id, velocity, chance.
-    /// Ties go to the higher velocity (any fixed rule keeps the schedule reproducible; the
-    /// tables do not depend on it).
-    fn pick(&self, wants: &HashMap<String, (f64, f64)>) -> Option<(String, f64, f64)> {
+    /// The likeliest needed run nobody is making and nobody has made: id, run, chance. Ties
+    /// go to the higher velocity, then the smaller id (any fixed rule keeps the schedule
+    /// reproducible; the tables do not depend on it).
+    fn pick(&self, wants: &HashMap<String, Want>) -> Option<(String, Job, f64)> {
         wants
             .iter()
             .filter(|(id, _)| !self.flight.contains_key(*id) && !self.made.contains_key(*id))
             // Not held by the book (a run it holds is known to every chain alike).
-            .filter(|(_, (v, _))| self.chains.first().is_none_or(|c| matches!(self.book.outcome(&job(*v, ""), &c.column), Ok(None))))
-            .max_by(|a, b| a.1.1.total_cmp(&b.1.1).then(a.1.0.total_cmp(&b.1.0)))
-            .map(|(id, &(v, p))| (id.clone(), v, p))
+            .filter(|(_, w)| self.chains.first().is_none_or(|c| matches!(self.book.outcome(&w.job, &c.column), Ok(None))))
+            .max_by(|a, b| a.1.p.total_cmp(&b.1.p).then(a.1.v_fps.total_cmp(&b.1.v_fps)).then(b.0.cmp(a.0)))
+            .map(|(id, w)| (id.clone(), w.job.clone(), w.p))
     }
 
     /// End the schedule: every run in flight is told to end; the first error is kept.

@@ -6,6 +6,7 @@
 
 use super::bracket::{Bracket, Finding};
 use super::fit::Fit;
+use super::v50::V50;
 use crate::cases::penetration::PenetrationScene;
 use crate::empirical::{Missile, Nose as EmpiricalNose, Target, table as empirical_table};
 use crate::error::Result;
@@ -100,6 +101,26 @@ pub struct Ours<'a> {
     pub lambert_jonas: Option<Fit>,
     /// Recht–Ipson fit.
     pub recht_ipson: Option<Fit>,
+    /// With several packings: each one's bisected thresholds (empty: the scene's own only).
+    pub packings: &'a [super::Packing],
+    /// With several packings: the V50 of scabbing and of perforation.
+    pub v50: Option<&'a (Option<V50>, Option<V50>)>,
+}
+
+/// How a V50 row's interval was formed, for its note.
+fn v50_note(v: &V50) -> String {
+    let how = if v.separated {
+        "the pooled outcomes separate completely (no velocity has both): Firth's penalised likelihood keeps the estimate finite, and the interval is its profile"
+    } else {
+        "Firth-penalised logistic fit, interval by profile penalised likelihood"
+    };
+    let open = match (v.lower_fps, v.upper_fps) {
+        (None, None) => "; unbounded both ways",
+        (None, _) => "; unbounded below",
+        (_, None) => "; unbounded above",
+        _ => "",
+    };
+    format!("{how}{open}; {} runs, {} with the outcome, logistic spread {:.1} ft/s", v.n, v.n_true, v.scale_fps)
 }
 
 const HEADER: [&str; 13] = [
@@ -130,7 +151,34 @@ pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, us
         _ => String::new(),
     };
     let bands = |t: &str| band(formulas, t).map_or((String::new(), String::new()), |(a, b)| (num(Some(a)), num(Some(b))));
-    for (name, f, n) in [("scabbing", ours.scabbing, bracket_points.0), ("perforation", ours.perforation, bracket_points.1)] {
+    if let Some((scab, perf)) = ours.v50 {
+        for (name, v, n) in [("scabbing", scab, bracket_points.0), ("perforation", perf, bracket_points.1)] {
+            let (bmin, bmax) = bands(name);
+            let est = v.as_ref().map(|v| v.v50_fps);
+            rows.push(vec![
+                name.into(),
+                format!("v50 ({:.0} % interval, {} packings)", 100.0 * super::v50::LEVEL, ours.packings.len()),
+                num(v.as_ref().and_then(|v| v.lower_fps)),
+                num(v.as_ref().and_then(|v| v.upper_fps)),
+                num(est),
+                String::new(),
+                String::new(),
+                String::new(),
+                n.to_string(),
+                bmin,
+                bmax,
+                inside(name, est),
+                v.as_ref().map_or_else(|| "every run had the same outcome: no V50".to_string(), v50_note),
+            ]);
+        }
+    }
+    let mut bisections: Vec<(String, &Finding, &Finding)> =
+        ours.packings.iter().map(|p| (format!("bisection seed {}", p.seed), &p.scabbing, &p.perforation)).collect();
+    if bisections.is_empty() {
+        bisections.push(("bisection".into(), ours.scabbing, ours.perforation));
+    }
+    let rows_of = bisections.iter().flat_map(|(m, s, p)| [("scabbing", m, *s, bracket_points.0), ("perforation", m, *p, bracket_points.1)]);
+    for (name, method, f, n) in rows_of {
         let (lo, hi) = match f.bracket {
             Bracket::Between { lo_fps, hi_fps } => (Some(lo_fps), Some(hi_fps)),
             Bracket::AtOrBelow(v) => (None, Some(v)),
@@ -141,7 +189,7 @@ pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, us
         let (bmin, bmax) = bands(name);
         rows.push(vec![
             name.into(),
-            "bisection".into(),
+            method.clone(),
             num(lo),
             num(hi),
             num(est),

@@ -10,6 +10,9 @@
 //! deterministic packings often are; ordinary ML is also reported where it
 //! exists, for comparison.
 
+/// The confidence level the sweeps report, as ballistic testing does: 90 %.
+pub const LEVEL: f64 = 0.90;
+
 /// A fitted V50 with its profile penalised-likelihood interval.
 #[derive(Debug, Clone, PartialEq)]
 pub struct V50 {
@@ -753,29 +756,11 @@ mod tests {
         println!("tiny gap: {r:?}");
     }
 
-    /// SplitMix64 (Steele, Lea & Flood 2014): a small seeded generator.
-    struct SplitMix64(u64);
-
-    impl SplitMix64 {
-        fn next_u64(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^ (z >> 31)
-        }
-
-        /// Uniform in [0, 1) with 53 random bits.
-        fn next_f64(&mut self) -> f64 {
-            (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-        }
-    }
-
     /// Coverage of the true V50 over `reps` synthetic data sets: 5 packings ×
     /// 500..=1500 step 50, Bernoulli draws from a logistic(1000, s).
     fn coverage(scale_fps: f64, seed: u64, reps: usize) -> (usize, usize, usize) {
         const TRUE_V50: f64 = 1000.0;
-        let mut rng = SplitMix64(seed);
+        let mut rng = crate::lattice::SplitMix64(seed);
         let (mut covered, mut separated, mut unbounded) = (0, 0, 0);
         let start = std::time::Instant::now();
         for _ in 0..reps {
@@ -784,7 +769,7 @@ mod tests {
                 for k in 0..=20 {
                     let v = 500.0 + 50.0 * k as f64;
                     let p = 1.0 / (1.0 + (-(v - TRUE_V50) / scale_fps).exp());
-                    runs.push((v, rng.next_f64() < p));
+                    runs.push((v, rng.unit() < p));
                 }
             }
             let r = fit(&runs, 0.90).expect("fit");

@@ -28,7 +28,7 @@
 //!   Residual velocity: the speed of the projectile's centre of mass, when first perforated and
 //!   at the end.
 //! * **settled** (the stop rule): the projectile has turned back (`rebounded`: its centre moves
-//!   out along the impact axis) or stopped (`embedded`: its centre's speed is below 1 % of the
+//!   out along the impact axis, or away from the front face: a glancing ricochet) or stopped (`embedded`: its centre's speed is below 1 % of the
 //!   impact speed), and the attached target has been quiet for `quiet_s` (its count of intact
 //!   bonds has not changed: no crack grew and nothing came loose; debris grinding against
 //!   debris does not count); or the projectile perforated and has been clear of the back face,
@@ -129,6 +129,8 @@ pub struct Look {
     pub clear: bool,
     /// Its centre's velocity along the impact axis, m/s (> 0 going in).
     pub v_axial_mps: f64,
+    /// Its centre's velocity into the target across the front face, m/s (> 0 going in).
+    pub v_face_mps: f64,
     /// Its centre's speed, m/s.
     pub speed_mps: f64,
     /// Intact bonds between attached target elements.
@@ -176,7 +178,9 @@ impl Tracking {
         if l.speed_mps < 0.01 * v0_mps {
             return Some("embedded");
         }
-        (l.v_axial_mps < 0.0).then_some("rebounded")
+        // Out along its path, or away from the front face (an oblique projectile that glanced
+        // off and left along the face is as settled as one that came straight back).
+        (l.v_axial_mps < 0.0 || l.v_face_mps < 0.0).then_some("rebounded")
     }
 }
 
@@ -296,6 +300,7 @@ impl Detector {
             through: rear < local,
             clear: rear < local - 2.0 * 2.0 * lay.concrete_radius_m,
             v_axial_mps: v[0] * lay.axis[0] + v[1] * lay.axis[1],
+            v_face_mps: -v[1],
             speed_mps: v[0].hypot(v[1]),
             attached_bonds,
         }
