@@ -153,6 +153,31 @@ impl SplitMix64 {
 /// sampling error; a test checks it). This replaces the source's megaclustering.
 pub fn irregular(rect: &Rect, radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<Lattice> {
     check_fits(rect, radius_m)?;
+    // Slow to make (the relaxation: about 1.7 s for the penetration beam at level 1), and a
+    // scene asks for its target's several times while it is built (its front face places the
+    // projectile; the model makes its bodies): the last few made are kept, by their inputs'
+    // bits, and handed out as copies.
+    type Key = ([u64; 4], u64, u64, u64);
+    static MADE: std::sync::Mutex<Vec<(Key, std::sync::Arc<Lattice>)>> = std::sync::Mutex::new(Vec::new());
+    const KEEP: usize = 8;
+    let key: Key = ([rect.x_min_m, rect.x_max_m, rect.y_min_m, rect.y_max_m].map(f64::to_bits), radius_m.to_bits(), seed, bond_gap_ratio.to_bits());
+    let made = |m: &mut Vec<(Key, std::sync::Arc<Lattice>)>| m.iter().find(|(k, _)| *k == key).map(|(_, l)| l.clone());
+    if let Some(l) = made(&mut MADE.lock().unwrap_or_else(|e| e.into_inner())) {
+        return Ok((*l).clone());
+    }
+    let l = std::sync::Arc::new(make_irregular(rect, radius_m, seed, bond_gap_ratio)?);
+    let mut m = MADE.lock().unwrap_or_else(|e| e.into_inner());
+    if made(&mut m).is_none() {
+        if m.len() == KEEP {
+            m.remove(0);
+        }
+        m.push((key, l.clone()));
+    }
+    Ok((*l).clone())
+}
+
+/// [`irregular`] made afresh.
+fn make_irregular(rect: &Rect, radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<Lattice> {
     if !(bond_gap_ratio.is_finite() && (0.0..=1.0).contains(&bond_gap_ratio)) {
         return Err(Error::input("bond_gap_ratio", format!("must lie in [0, 1], got {bond_gap_ratio}")));
     }

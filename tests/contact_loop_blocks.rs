@@ -10,6 +10,7 @@ use std::path::Path;
 
 use demsweep::kernel::contacts::{Bond, Contact, ContactForce};
 use demsweep::kernel::forces::{self, CHUNK, Out, Stage};
+use demsweep::kernel::law::rate_field::RateField;
 use demsweep::kernel::law::{self, Dissipation, Extra, PartSet, PartsVisitor};
 use demsweep::kernel::{Model, Threading};
 use demsweep::scene::{SceneFile, load};
@@ -71,14 +72,7 @@ impl PartsVisitor for Both<'_> {
             let d = &mut r_partial[e / CHUNK];
             r_force[e] = match forces::kinematics(pos, vel, c, k) {
                 Ok(g) if c.bond == Bond::Intact => {
-                    // The rate reads the smoothed field where the model has one (`rate_field`).
-                    let rv = &m.rate_field.vel_mps;
-                    let vn = if rv.is_empty() {
-                        g.vn_mps
-                    } else {
-                        let (a, b) = (rv[c.i as usize], rv[c.j as usize]);
-                        (b[0] - a[0]) * g.nx + (b[1] - a[1]) * g.ny
-                    };
+                    let vn = RateField::normal_velocity_mps(&m.rate_field.vel_mps, c.i, c.j, g.nx, g.ny, g.vn_mps);
                     let ratios = law::bond_ratios::<P>(x, k, vn);
                     law::bonded_at::<P>(c, x, k, &g, ratios, dt_s, d)
                 }

@@ -146,30 +146,29 @@ fn num(v: Option<f64>) -> String {
 /// The thresholds table.
 pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, usize)) -> Table {
     let mut rows = Vec::new();
-    let inside = |t: &str, v: Option<f64>| match (band(formulas, t), v) {
-        (Some((lo, hi)), Some(v)) => (v >= lo && v <= hi).to_string(),
-        _ => String::new(),
+    // One row: the estimate, its bracket or interval, a fit's a, p and rms, the points it rests
+    // on, the formulas' band for its threshold and whether the estimate lies in it, a note.
+    let mut push = |threshold: &str, method: String, (lo, hi): (Option<f64>, Option<f64>), est: Option<f64>, fit: [String; 3], points: String, note: String| {
+        let band = band(formulas, threshold);
+        let inside = match (band, est) {
+            (Some((a, b)), Some(v)) => (v >= a && v <= b).to_string(),
+            _ => String::new(),
+        };
+        let [a, p, rms] = fit;
+        rows.push(vec![threshold.into(), method, num(lo), num(hi), num(est), a, p, rms, points, num(band.map(|b| b.0)), num(band.map(|b| b.1)), inside, note]);
     };
-    let bands = |t: &str| band(formulas, t).map_or((String::new(), String::new()), |(a, b)| (num(Some(a)), num(Some(b))));
+    let no_fit = || [String::new(), String::new(), String::new()];
     if let Some((scab, perf)) = ours.v50 {
         for (name, v, n) in [("scabbing", scab, bracket_points.0), ("perforation", perf, bracket_points.1)] {
-            let (bmin, bmax) = bands(name);
-            let est = v.as_ref().map(|v| v.v50_fps);
-            rows.push(vec![
-                name.into(),
+            push(
+                name,
                 format!("v50 ({:.0} % interval, {} packings)", 100.0 * super::v50::LEVEL, ours.packings.len()),
-                num(v.as_ref().and_then(|v| v.lower_fps)),
-                num(v.as_ref().and_then(|v| v.upper_fps)),
-                num(est),
-                String::new(),
-                String::new(),
-                String::new(),
+                (v.as_ref().and_then(|v| v.lower_fps), v.as_ref().and_then(|v| v.upper_fps)),
+                v.as_ref().map(|v| v.v50_fps),
+                no_fit(),
                 n.to_string(),
-                bmin,
-                bmax,
-                inside(name, est),
                 v.as_ref().map_or_else(|| "every run had the same outcome: no V50".to_string(), v50_note),
-            ]);
+            );
         }
     }
     let mut bisections: Vec<(String, &Finding, &Finding)> =
@@ -177,69 +176,25 @@ pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, us
     if bisections.is_empty() {
         bisections.push(("bisection".into(), ours.scabbing, ours.perforation));
     }
-    let rows_of = bisections.iter().flat_map(|(m, s, p)| [("scabbing", m, *s, bracket_points.0), ("perforation", m, *p, bracket_points.1)]);
-    for (name, method, f, n) in rows_of {
-        let (lo, hi) = match f.bracket {
-            Bracket::Between { lo_fps, hi_fps } => (Some(lo_fps), Some(hi_fps)),
-            Bracket::AtOrBelow(v) => (None, Some(v)),
-            Bracket::NotReached(v) => (Some(v), None),
-            Bracket::Empty => (None, None),
-        };
-        let est = f.estimate_fps();
-        let (bmin, bmax) = bands(name);
-        rows.push(vec![
-            name.into(),
-            method.clone(),
-            num(lo),
-            num(hi),
-            num(est),
-            String::new(),
-            String::new(),
-            String::new(),
-            n.to_string(),
-            bmin,
-            bmax,
-            inside(name, est),
-            f.note(name),
-        ]);
+    for (method, scab, perf) in &bisections {
+        for (name, f, n) in [("scabbing", *scab, bracket_points.0), ("perforation", *perf, bracket_points.1)] {
+            let bracket = match f.bracket {
+                Bracket::Between { lo_fps, hi_fps } => (Some(lo_fps), Some(hi_fps)),
+                Bracket::AtOrBelow(v) => (None, Some(v)),
+                Bracket::NotReached(v) => (Some(v), None),
+                Bracket::Empty => (None, None),
+            };
+            push(name, method.clone(), bracket, f.estimate_fps(), no_fit(), n.to_string(), f.note(name));
+        }
     }
     for (method, fit) in [("lambert-jonas", ours.lambert_jonas), ("recht-ipson", ours.recht_ipson)] {
-        let (bmin, bmax) = bands("perforation");
         let note = if fit.is_none() { "too few perforating runs to fit".to_string() } else { "V_r = a (V^p - V_bl^p)^(1/p) over the perforating runs".to_string() };
-        rows.push(vec![
-            "perforation".into(),
-            method.into(),
-            String::new(),
-            String::new(),
-            num(fit.map(|f| f.v_bl_fps)),
-            fit.map_or(String::new(), |f| format!("{:.4}", f.a)),
-            fit.map_or(String::new(), |f| format!("{:.3}", f.p)),
-            num(fit.map(|f| f.rms_fps)),
-            fit.map_or(String::new(), |f| f.points.to_string()),
-            bmin,
-            bmax,
-            inside("perforation", fit.map(|f| f.v_bl_fps)),
-            note,
-        ]);
+        let cols = fit.map_or_else(no_fit, |f| [format!("{:.4}", f.a), format!("{:.3}", f.p), num(Some(f.rms_fps))]);
+        push("perforation", method.into(), (None, None), fit.map(|f| f.v_bl_fps), cols, fit.map_or(String::new(), |f| f.points.to_string()), note);
     }
     for e in formulas {
-        let (bmin, bmax) = bands(e.threshold);
         let note = if e.usable { e.validity.clone() } else if e.v_fps.is_some() { format!("outside validity: {}", e.validity) } else { e.cell.clone() };
-        rows.push(vec![
-            e.threshold.into(),
-            e.method.clone(),
-            String::new(),
-            String::new(),
-            num(e.v_fps),
-            String::new(),
-            String::new(),
-            String::new(),
-            String::new(),
-            bmin,
-            bmax,
-            inside(e.threshold, e.v_fps),
-            note,
-        ]);
+        push(e.threshold, e.method.clone(), (None, None), e.v_fps, no_fit(), String::new(), note);
     }
     Table { header: HEADER.iter().map(|s| s.to_string()).collect(), rows }
 }

@@ -21,6 +21,7 @@ use rayon::prelude::*;
 use super::geometry::{self, Geometry, Separation, separation};
 use super::{bonds4, mixed4, pieces, spans};
 use super::contacts::{Bond, Contact, ContactForce};
+use super::law::rate_field::RateField;
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 
 /// Contacts per chunk: fixed, so partial sums do not depend on the number of threads.
@@ -478,13 +479,7 @@ fn first_half<P: PartSet>(at: &StepInput<'_>, c: &Contact, x: &mut Extra) -> Ahe
     let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
         let g = along(at.vel, c, k, geometry::of(s));
-        // The rate reads the smoothed field where the model has one (`law::rate_field`).
-        let vn_rate = if P::RATE && !at.rate_vel.is_empty() {
-            let (a, b) = (at.rate_vel[c.i as usize], at.rate_vel[c.j as usize]);
-            (b[0] - a[0]) * g.nx + (b[1] - a[1]) * g.ny
-        } else {
-            g.vn_mps
-        };
+        let vn_rate = if P::RATE { RateField::normal_velocity_mps(at.rate_vel, c.i, c.j, g.nx, g.ny, g.vn_mps) } else { g.vn_mps };
         Ahead::Bond(g, law::bond_ratios::<P>(x, k, vn_rate))
     } else if apart_with_nothing_to_forget(c, k, s.d2_m2) {
         Ahead::Nothing

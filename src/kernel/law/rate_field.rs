@@ -133,6 +133,18 @@ impl RateField {
         }
     }
 
+    /// The relative normal velocity of the pair (i, j) along the unit normal (nx, ny) as the
+    /// rate reads it, m/s: the smoothed field's where the model has one (`rate_vel` the field's
+    /// [`RateField::vel_mps`]), else the pair's own `vn_mps`.
+    #[inline(always)]
+    pub fn normal_velocity_mps(rate_vel: &[[f64; 2]], i: u32, j: u32, nx: f64, ny: f64, vn_mps: f64) -> f64 {
+        if rate_vel.is_empty() {
+            return vn_mps;
+        }
+        let (a, b) = (rate_vel[i as usize], rate_vel[j as usize]);
+        (b[0] - a[0]) * nx + (b[1] - a[1]) * ny
+    }
+
     /// True when no element is smoothed.
     pub fn is_empty(&self) -> bool {
         self.members.is_empty()
