@@ -63,3 +63,21 @@ fn the_ci_scene_reproduces_its_committed_outcomes() {
         assert!(e.abs() < 0.02, "{v0} ft/s: the coarse scene's ledger must close within 2 % of the impact energy: {e}");
     }
 }
+
+/// Under the default mapping (sectional density) every projectile field acts on the physics it
+/// names: twice the weight, twice the mass per unit thickness, goes deeper at 500 ft/s. Under the
+/// source's effective density the slice grows with the weight, so the field could not act: it is
+/// refused, saying why.
+#[test]
+fn doubling_the_weight_deepens_the_penetration_and_the_seed_mapping_refuses_it() {
+    let mut s = scene();
+    s.projectile.v0_fps = 500.0;
+    let light = run(&s, Hooks::default()).unwrap().row.outcome.depth_in;
+    s.projectile.weight_lb *= 2.0;
+    let heavy = run(&s, Hooks::default()).unwrap().row.outcome.depth_in;
+    eprintln!("depth at 500 ft/s: {light:.3} in at 15 lb, {heavy:.3} in at 30 lb");
+    assert!(heavy > 1.2 * light, "30 lb {heavy} in, 15 lb {light} in");
+    s.mapping.rule = demsweep::cases::penetration::MappingRule::SeedEffectiveDensity;
+    let e = run(&s, Hooks::default()).err().expect("refused").to_string();
+    assert!(e.contains("projectile.weight_lb") && e.contains("seed_effective_density"), "{e}");
+}

@@ -33,12 +33,13 @@ pub struct View {
 }
 
 impl View {
-    /// The beam with 4 in around it, the projectile's start above it and 40 % of the depth
-    /// below it (where scabs fly).
+    /// The beam with 4 in around it, the projectile's start above it and the beam's depth
+    /// below it: an irregular beam that fails bends and opens far below its back face, where
+    /// the scabs and the projectile go.
     pub fn of(scene: &PenetrationScene) -> Result<View> {
         let (t, p) = (&scene.target, &scene.projectile);
         let x = (-4.0 * M_PER_IN, (t.length_in + 4.0) * M_PER_IN);
-        let y = (-0.4 * t.depth_in * M_PER_IN, (t.depth_in + p.standoff_in.min(12.0) + p.length_in + 3.0) * M_PER_IN);
+        let y = (-t.depth_in * M_PER_IN, (t.depth_in + p.standoff_in.min(12.0) + p.length_in + 3.0) * M_PER_IN);
         let px_per_m = WIDTH_PX as f64 / (x.1 - x.0);
         let height_px = TITLE_PX + ((y.1 - y.0) * px_per_m).ceil() as u32;
         Ok(View { x_min_m: x.0, y_max_m: y.1, px_per_m, height_px, v0_fps: p.v0_fps })
