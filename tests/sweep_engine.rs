@@ -323,3 +323,43 @@ fn bad_input_is_refused_with_a_clear_message_and_no_table() {
     let _ = std::fs::remove_dir_all(out);
     std::fs::remove_file(changed).unwrap();
 }
+
+/// Several packings: every packing's grid and bisections, the same tables on one thread and on
+/// two, a V50 row per threshold whose interval holds its estimate, and a bisection row per
+/// packing and threshold.
+#[test]
+fn a_sweep_over_packings_reports_v50s_and_each_packing_the_same_on_any_thread_count() {
+    let (one, two) = (tmp("packings-one"), tmp("packings-two"));
+    let args = |out: &Path, threads: &str| {
+        let o = out.to_str().unwrap().to_string();
+        ok(&["ballistic", "--scene", "tests/data/tiny_irregular.toml", "--v0", "300..900", "--step", "200", "--tol-fps", "50", "--packings", "3", "--quiet", "--threads", threads, "--out", &o])
+    };
+    args(&one, "1");
+    let stdout = String::from_utf8_lossy(&args(&two, "2").stdout).to_string();
+    same_tables(&one, &two);
+    assert!(stdout.contains("scabbing V50") && stdout.contains("seed 3"), "{stdout}");
+    let runs = Table::read_csv(&one.join("runs.csv")).unwrap();
+    for seed in 1..=3 {
+        let grid = (0..runs.rows.len()).filter(|&r| runs.get(r, "run_id").unwrap().starts_with(&format!("target.seed={seed};")) && runs.get(r, "purpose").unwrap().contains("grid")).count();
+        assert_eq!(grid, 4, "packing {seed}: the grid 300, 500, 700, 900");
+    }
+    let t = Table::read_csv(&one.join("thresholds.csv")).unwrap();
+    let f = |r: usize, c: &str| -> Option<f64> { t.get(r, c).unwrap().parse().ok() };
+    for (r, name) in [(0, "scabbing"), (1, "perforation")] {
+        assert_eq!(t.get(r, "threshold"), Some(name));
+        assert!(t.get(r, "method").unwrap().starts_with("v50"), "{:?}", t.rows[r]);
+        let v = f(r, "v_est_fps").expect("a V50");
+        assert!(f(r, "v_low_fps").is_none_or(|lo| lo < v) && f(r, "v_high_fps").is_none_or(|hi| hi > v), "{:?}", t.rows[r]);
+    }
+    let per_seed = (0..t.rows.len()).filter(|&r| t.get(r, "method").unwrap().starts_with("bisection seed")).count();
+    assert_eq!(per_seed, 6, "three packings, two thresholds each");
+    // A regular lattice has one packing.
+    let bad = tmp("packings-regular");
+    let o = demsweep(&["ballistic", "--scene", "tests/data/tiny_beam.toml", "--packings", "2", "--quiet", "--out", bad.to_str().unwrap()]);
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && err.contains("--packings") && err.contains("irregular"), "{err}");
+    assert!(!bad.join("runs.csv").exists(), "nothing written");
+    for d in [one, two] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}

@@ -278,7 +278,7 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], p
     // Two bisections a packing, all side by side on the engine's threads (`schedule`), each
     // bracket read from its packing's grid and its own runs only, so that its sequence of
     // velocities — and the tables — do not depend on which run finished first.
-    let grid_of = |fixed: &Vec<Override>| -> Vec<Job> { grid.iter().map(|&v| schedule::job_with(fixed, v, "grid")).collect() };
+    let grid_of = |fixed: &Vec<Override>| grid_jobs(grid, std::slice::from_ref(fixed));
     let mut chains = Vec::new();
     for fixed in packings {
         let mine = grid_of(fixed);
@@ -299,7 +299,9 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], p
     // (an outcome missing above its first appearance) are reported as non-monotone.
     let mut found = Vec::new();
     for (fixed, pair) in packings.iter().zip(chains.chunks(2)) {
-        let same_packing: Vec<Job> = planned.iter().filter(|j| j.overrides[..j.overrides.len() - 1] == fixed[..]).cloned().collect();
+        let mut same_packing: Vec<Job> = grid_of(fixed).into_iter().chain(pair.iter().flat_map(|c| c.runs.iter().cloned())).collect();
+        same_packing.sort_by_key(Job::id);
+        same_packing.dedup_by_key(|j| j.id());
         let finding = |c: &schedule::Chain| {
             let own: Vec<Job> = grid_of(fixed).into_iter().chain(c.runs.iter().cloned()).collect();
             let mut f = bracket::find(&points(store, &own, &c.column));
