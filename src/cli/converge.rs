@@ -32,6 +32,9 @@ pub struct Args {
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
+    /// Remove the folder's old runs first (the scene or the program changed).
+    #[arg(long)]
+    pub fresh: bool,
 }
 
 /// Run the study and print its tables.
@@ -45,6 +48,7 @@ pub fn run(args: Args) -> Result<()> {
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,
+        fresh: args.fresh,
     };
     let report = converge::run(&plan)?;
     let (levels, summary) = converge::tables(&report);
