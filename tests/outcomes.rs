@@ -249,6 +249,56 @@ fn regression_a_slow_late_fracture_is_not_cut_off() {
     assert!(when >= t.last_break_s + q && t.last_break_s > 9.0 * q, "settled at {when} s, last break {} s", t.last_break_s);
 }
 
+/// A projectile going on into the target at a steady speed, with the target breaking around it
+/// (a beam broken into a mechanism carries it along): nothing pushes on it, so the target cannot
+/// stop it. It is perforated (and scabbed) from the start of the steady stretch, with that speed
+/// as its residual, `unresisted_s` later, not at the time cap.
+#[test]
+fn a_projectile_the_target_no_longer_resists_goes_through() {
+    let spec = OutcomeSpec::default();
+    let (v0, q) = (300.0, spec.unresisted_s);
+    let mut t = Tracking::default();
+    let mut bonds = 1000;
+    let mut time = 0.0;
+    let mut settled = None;
+    // Slowing hard (10 % of its speed per unresisted_s) until 5 q, then steady at 15 m/s
+    // (5 % of v0) with a bond breaking every look.
+    while settled.is_none() && time < 40.0 * q {
+        time += 0.05 * q;
+        let v = if time < 5.0 * q { 15.0 * 1.1f64.powf(5.0 - time / q) } else { 15.0 };
+        bonds -= 1;
+        settled = t.observe(&look(time, v, bonds), &spec, v0).map(|s| (s, time));
+    }
+    let (why, when) = settled.expect("settles before 40 quiet periods");
+    assert_eq!(why, "unresisted");
+    let start = t.perforation_time_s.expect("perforated");
+    // Within 2 % of 15 m/s from 1.1^x ≤ 1.02, x ≤ 0.21 q before 5 q.
+    assert!(start >= 4.75 * q && start <= 5.0 * q, "the steady stretch began at {start} s");
+    assert!(when >= start + q - 1e-12 && when < start + 1.1 * q, "settled at {when} s, {start} s after the stretch began");
+    assert_eq!(t.scab_time_s, Some(start), "a perforation is a scab too");
+    let r = t.v_residual_mps;
+    assert!(r >= 15.0 && r <= 15.0 * (1.0 + spec.unresisted_change), "residual {r} m/s, the stretch's first speed");
+}
+
+/// Slowing by more than `unresisted_change` of its speed per `unresisted_s` is resistance: the
+/// run goes on (here to the embedded rule once it has stopped), nothing is perforated.
+#[test]
+fn a_projectile_still_slowing_is_not_taken_for_unresisted() {
+    let spec = OutcomeSpec::default();
+    let (v0, q) = (300.0, spec.unresisted_s);
+    let rate = 2.0 * spec.unresisted_change;
+    let mut t = Tracking::default();
+    let mut time = 0.0;
+    let mut settled = None;
+    while settled.is_none() && time < 400.0 * q {
+        time += 0.05 * q;
+        let v = (30.0 * (-rate * time / q).exp() - 0.5).max(0.0);
+        settled = t.observe(&look(time, v, 1000), &spec, v0).map(|s| (s, time));
+    }
+    assert_eq!(settled.map(|s| s.0), Some("embedded"));
+    assert_eq!(t.perforation_time_s, None);
+}
+
 #[test]
 fn perforation_records_the_residual_speed_when_first_through_and_settles_when_clear() {
     let spec = OutcomeSpec::default();

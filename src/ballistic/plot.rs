@@ -137,12 +137,14 @@ fn marker(r: &Run) -> RGBColor {
     }
 }
 
+/// The legend in the lower right: both panels rise to the right, so that corner is empty, and
+/// the packings' ticks along the top stay in view.
 fn legend<'a, 'b: 'a>(
     chart: &mut Chart<'a, 'b>,
 ) -> AreaResult {
     chart
         .configure_series_labels()
-        .position(SeriesLabelPosition::UpperLeft)
+        .position(SeriesLabelPosition::LowerRight)
         .background_style(WHITE.mix(0.85))
         .border_style(BLACK)
         .label_font(("sans-serif", 14))

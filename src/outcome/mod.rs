@@ -33,8 +33,14 @@
 //!   bonds has not changed: no crack grew and nothing came loose; debris grinding against
 //!   debris does not count); or the projectile perforated and has been clear of the back face,
 //!   by two element diameters, for `quiet_s` (`perforated`), time for the back face to shed
-//!   what the exit loosened. A run that never settles ends at its time cap (`time_cap`); the
-//!   outcome is then what was seen up to the cap.
+//!   what the exit loosened; or the projectile has gone on into the target at a steady speed
+//!   (within `unresisted_change` of it, at ≥ 1 % of the impact speed) for `unresisted_s`
+//!   (`unresisted`): nothing pushes on it, so the target has given way and cannot stop it. It
+//!   is then perforated (and scabbed) from the start of that stretch, with that speed as its
+//!   residual: in the 2D slice this is the beam broken into a mechanism, its halves swinging
+//!   away with the projectile between them, which a time cap would call lodged or perforated
+//!   depending only on how long it waited. A run that never settles ends at its time cap
+//!   (`time_cap`); the outcome is then what was seen up to the cap.
 
 pub mod fragments;
 
@@ -108,6 +114,10 @@ pub struct Tracking {
     pub last_break_s: f64,
     /// Since when the projectile has been clear of the back face, s.
     pub clear_since_s: Option<f64>,
+    /// Since when (s) the projectile has gone on into the target at about one axial speed
+    /// (m/s): the start of an unresisted stretch.
+    #[serde(default)]
+    pub unresisted_since: Option<(f64, f64)>,
 }
 
 /// One look at the model, reduced to what the outcome and the stop rule need.
@@ -172,6 +182,24 @@ impl Tracking {
             return (l.time_s - since >= spec.quiet_s).then_some("perforated");
         }
         self.clear_since_s = None;
+        // Going on into the target with nothing pushing on it: the target has given way (a
+        // beam broken into a mechanism carries the projectile along, or the hinges open under
+        // it) and cannot stop it any more, so it goes through, whatever a time cap would see.
+        if l.v_axial_mps >= 0.01 * v0_mps {
+            match self.unresisted_since {
+                Some((t0, v)) if (l.v_axial_mps - v).abs() <= spec.unresisted_change * v => {
+                    if l.time_s - t0 >= spec.unresisted_s {
+                        self.perforation_time_s = Some(t0);
+                        self.v_residual_mps = v;
+                        self.scab_time_s.get_or_insert(t0);
+                        return Some("unresisted");
+                    }
+                }
+                _ => self.unresisted_since = Some((l.time_s, l.v_axial_mps)),
+            }
+        } else {
+            self.unresisted_since = None;
+        }
         if l.time_s - self.last_break_s < spec.quiet_s {
             return None;
         }

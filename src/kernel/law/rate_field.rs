@@ -38,6 +38,8 @@ pub struct RateField {
     // Configuration, fixed when the model is built.
     /// Grid spacing h = ℓ/2, m.
     pub spacing_m: f64,
+    /// 1/h, 1/m.
+    inv_spacing: f64,
     /// The grid's lower-left node, m.
     origin_m: [f64; 2],
     /// Nodes along x and y.
@@ -46,8 +48,12 @@ pub struct RateField {
     /// The elements smoothed, in index order.
     members: Vec<u32>,
     // Scratch, remade every step.
-    /// Per node: Σ w m vx (kg·m/s), Σ w m vy (kg·m/s), Σ w m (kg).
+    /// Per node: Σ w m vx (kg·m/s), Σ w m vy (kg·m/s), Σ w m (kg); then, for nodes with
+    /// mass, the node's velocity (m/s) in the first two.
     sums: Vec<[f64; 3]>,
+    /// Per member: its cell and weights, as the transfer to the grid found them.
+    #[serde(skip)]
+    cells: Vec<Option<(usize, [f64; 4])>>,
     /// Per element: its smoothed velocity [vx, vy], m/s (its own for elements outside the
     /// grid; 0 for elements not smoothed, whose bonds carry no averaged rate); empty when no
     /// element is smoothed.
@@ -74,14 +80,14 @@ impl RateField {
         let count = |a: usize| ((hi[a] + margin - origin_m[a]) / h).ceil() as usize + 1;
         let members_empty = members.is_empty();
         let (nodes_x, nodes_y) = if members_empty { (0, 0) } else { (count(0), count(1)) };
-        RateField { spacing_m: h, origin_m, nodes_x, nodes_y, members, sums: vec![[0.0; 3]; nodes_x * nodes_y], vel_mps: if members_empty { Vec::new() } else { vec![[0.0; 2]; elements] } }
+        RateField { spacing_m: h, inv_spacing: 1.0 / h, cells: Vec::new(), origin_m, nodes_x, nodes_y, members, sums: vec![[0.0; 3]; nodes_x * nodes_y], vel_mps: if members_empty { Vec::new() } else { vec![[0.0; 2]; elements] } }
     }
 
     /// The cell of `p` and the weights of its four nodes (lower-left, lower-right, upper-left,
     /// upper-right), or None outside the grid.
     #[inline(always)]
     fn cell(&self, p: [f64; 3]) -> Option<(usize, [f64; 4])> {
-        let (fx, fy) = ((p[0] - self.origin_m[0]) / self.spacing_m, (p[1] - self.origin_m[1]) / self.spacing_m);
+        let (fx, fy) = ((p[0] - self.origin_m[0]) * self.inv_spacing, (p[1] - self.origin_m[1]) * self.inv_spacing);
         // Also refuses NaN.
         if !(fx >= 0.0 && fy >= 0.0 && fx < (self.nodes_x - 1) as f64 && fy < (self.nodes_y - 1) as f64) {
             return None;
@@ -97,10 +103,12 @@ impl RateField {
             return;
         }
         self.sums.iter_mut().for_each(|s| *s = [0.0; 3]);
+        self.cells.clear();
         let nx = self.nodes_x;
         for &e in &self.members {
             let e = e as usize;
-            if let Some((k, w)) = self.cell(pos[e]) {
+            let c = self.cell(pos[e]);
+            if let Some((k, w)) = c {
                 let (m, v) = (mass[e], vel[e]);
                 for (node, wn) in [k, k + 1, k + nx, k + nx + 1].into_iter().zip(w) {
                     let s = &mut self.sums[node];
@@ -110,22 +118,29 @@ impl RateField {
                     s[2] += wm;
                 }
             }
+            self.cells.push(c);
         }
-        for &e in &self.members {
+        // Node momenta become node velocities once, not once per element that reads them.
+        for s in &mut self.sums {
+            if s[2] > 0.0 {
+                let inv = 1.0 / s[2];
+                s[0] *= inv;
+                s[1] *= inv;
+            }
+        }
+        for (&e, c) in self.members.iter().zip(&self.cells) {
             let e = e as usize;
             let v = vel[e];
-            self.vel_mps[e] = match self.cell(pos[e]) {
+            self.vel_mps[e] = match *c {
                 None => [v[0], v[1]],
                 Some((k, w)) => {
                     let mut out = [0.0; 2];
                     for (node, wn) in [k, k + 1, k + nx, k + nx + 1].into_iter().zip(w) {
+                        // A node the element weighs (wn > 0) is one it added mass to; a node of
+                        // weight 0 may hold nothing, and adds nothing.
                         let s = self.sums[node];
-                        // A node the element weighs is one it added mass to (s[2] > 0) unless
-                        // its weight is 0.
-                        if wn > 0.0 {
-                            out[0] += wn * s[0] / s[2];
-                            out[1] += wn * s[1] / s[2];
-                        }
+                        out[0] += wn * s[0];
+                        out[1] += wn * s[1];
                     }
                     out
                 }
