@@ -24,6 +24,7 @@ pub mod material;
 pub mod outcome;
 pub mod penetration;
 pub mod picture;
+pub mod provenance;
 pub mod run;
 pub mod scene;
 pub mod shape;

@@ -55,7 +55,7 @@ fn a_checkpoint_refuses_another_scene_another_build_and_damaged_bytes() {
     assert!(msg.contains("different scene"), "{msg}");
 
     // Written by another build: refused, naming both.
-    let build = demsweep::sweep::hash::build_id();
+    let build = demsweep::provenance::build_id();
     assert_eq!(&bytes[9..25], build.as_bytes(), "the header carries the writer's build id");
     let mut rebuilt = bytes.clone();
     rebuilt[9..25].copy_from_slice(b"00000000000000ff");

@@ -30,7 +30,7 @@ use serde::{Deserialize, Serialize};
 use crate::error::{Error, Result};
 use crate::scene::SceneFile;
 use crate::scene::overrides::Override;
-use crate::sweep::hash::build_id;
+use crate::provenance::build_id;
 use crate::sweep::job::{Base, Job};
 use crate::sweep::{Engine, Store};
 use crate::table::{Table, write_atomic};
@@ -210,7 +210,7 @@ pub fn velocities(v_min: f64, v_max: f64, step: f64) -> Result<Vec<f64>> {
     if v_min > v_max {
         return Err(Error::input("--v0", format!("reversed range {v_min}..{v_max}: the start must not exceed the end")));
     }
-    crate::cli::range::steps(v_min, v_max, step, "--step")
+    crate::sweep::range::steps(v_min, v_max, step, "--step")
 }
 
 /// Run the plan.

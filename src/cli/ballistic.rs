@@ -110,7 +110,7 @@ fn print(r: &Report, out: &std::path::Path) {
 
 /// Run the sweep.
 pub fn run(args: Args) -> Result<()> {
-    let (v0_min_fps, v0_max_fps) = super::range::parse("--v0", &args.v0)?;
+    let (v0_min_fps, v0_max_fps) = crate::sweep::range::parse("--v0", &args.v0)?;
     let shard = args.shard.as_deref().map(parse_shard).transpose()?;
     let plan = Plan {
         scene: args.scene.clone(),

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use crate::empirical::{Missile, Nose, Target, plot, table};
 use crate::error::{Error, Result};
 
-use super::range;
+use crate::sweep::range;
 
 /// Output format.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]

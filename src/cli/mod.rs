@@ -7,7 +7,6 @@ pub mod bench;
 pub mod calibrate;
 pub mod converge;
 pub mod empirical;
-pub mod range;
 pub mod run;
 pub mod scene;
 pub mod sweep;

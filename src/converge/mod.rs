@@ -77,7 +77,8 @@ pub struct Level {
     pub wall_s: f64,
     /// The quantity.
     pub value: f64,
-    /// What the run ended as (penetration: scabbed / perforated / end reason), empty otherwise.
+    /// What the run ended as (penetration: scabbed / perforated, and `time_cap` if it never
+    /// settled), empty otherwise.
     pub outcome: String,
 }
 
@@ -253,11 +254,13 @@ fn penetration(plan: &Plan) -> Result<Vec<Level>> {
                 dt_s: f("dt_s")?,
                 wall_s: f("wall_s")?,
                 value: f("depth_in")?,
+                // Embedded and rebounded are one outcome (held); a run cut at its time cap
+                // never settled, which is another.
                 outcome: format!(
-                    "scabbed={} perforated={} {}",
+                    "scabbed={} perforated={}{}",
                     store.get(j, "scabbed").unwrap_or(""),
                     store.get(j, "perforated").unwrap_or(""),
-                    store.get(j, "end_reason").unwrap_or("")
+                    if store.get(j, "end_reason") == Some("time_cap") { " time_cap" } else { "" }
                 ),
             })
         })

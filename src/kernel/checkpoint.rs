@@ -10,7 +10,7 @@
 //! refuses a checkpoint written by another scene. A new parameter is covered by the fingerprint
 //! as soon as it is a field of the configuration.
 //!
-//! A checkpoint also names the build of demsweep that wrote it (`sweep::hash::build_id`) and is
+//! A checkpoint also names the build of demsweep that wrote it (`provenance::build_id`) and is
 //! refused by any other: a run continued by a changed program would not be the run that never
 //! stopped.
 //!
@@ -22,7 +22,7 @@ use super::Model;
 use super::state::State;
 use crate::error::{Error, Result};
 use crate::fnv::fnv1a;
-use crate::sweep::hash::build_id;
+use crate::provenance::build_id;
 
 const MAGIC: [u8; 8] = *b"DEMSWCK\0";
 /// Format version: 2 is the serde-derived state (1 was a hand-listed record); 3 drops the

@@ -66,7 +66,7 @@ impl Engine<'_> {
             if !self.quiet {
                 eprintln!(
                     "{n} runs of another build of demsweep (build {build}; this is {}) set aside in {}: they are made again",
-                    super::hash::build_id(),
+                    crate::provenance::build_id(),
                     path.display()
                 );
             }

@@ -1,17 +1,11 @@
 //! The scene hash: FNV-1a (64 bit) over the canonical text of the scene as read (every default
 //! filled in, comments and layout gone) and the crate's version, so that two files that mean
 //! the same scene share a hash and a changed value never does. Which program made a run is the
-//! [`build_id`], kept beside it (a new build reruns a scene's runs; it does not make the scene
-//! another one).
+//! build id, kept beside it (a new build reruns a scene's runs; it does not make the scene
+//! another one; [`crate::provenance::build_id`]).
 
 use crate::fnv::fnv1a;
 use crate::scene::SceneFile;
-
-/// The id of this build of demsweep (16 hex digits): a hash of its sources and locked
-/// dependencies (`build.rs`). Two binaries with the same id come from the same code.
-pub fn build_id() -> &'static str {
-    env!("DEMSWEEP_BUILD")
-}
 
 /// The canonical text of a scene.
 pub fn canonical(scene: &SceneFile) -> String {

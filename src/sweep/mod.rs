@@ -6,7 +6,7 @@
 //!
 //! Every row names its inputs: `run_id` (the overrides that made it, e.g.
 //! `projectile.v0_fps=850`), `scene_hash` (a hash of the whole base scene as read, defaults
-//! included, and of the crate version), `build` (the program that made it, [`hash::build_id`])
+//! included, and of the crate version), `build` (the program that made it, [`crate::provenance::build_id`])
 //! and `level`; a row can be traced to the exact run and the exact code.
 
 pub mod engine;
@@ -15,6 +15,7 @@ pub mod job;
 pub mod parquet;
 pub mod plan;
 pub mod progress;
+pub mod range;
 pub mod share;
 pub mod store;
 

@@ -55,7 +55,7 @@ impl Vary {
         if h.is_nan() || h <= 0.0 {
             return Err(Error::input(&arg, format!("the step must be > 0, got {h}")));
         }
-        let values = crate::cli::range::steps(a, b, h, &arg)?
+        let values = crate::sweep::range::steps(a, b, h, &arg)?
             .into_iter()
             .map(|v| if integral { toml::Value::Integer(v.round() as i64) } else { toml::Value::Float(v) })
             .collect();

@@ -10,7 +10,7 @@
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
-use super::hash::build_id;
+use crate::provenance::build_id;
 use super::job::{Base, Job};
 use crate::error::{Error, Result};
 use crate::table::Table;

@@ -1,5 +1,5 @@
 //! Velocity ranges on the command line: `START..END` (inclusive) or a single `V`, stepped by
-//! `--step`. Shared by every subcommand that sweeps impact velocity.
+//! `--step`. Parsed for the command line, stepped for every sweep over impact velocity.
 
 use crate::error::{Error, Result};
 
