@@ -14,7 +14,7 @@
 //! seeds after it, run side by side on the pool): the factor then describes the concrete, not
 //! one mesh of it.
 
-use crate::cases::penetration::PenetrationScene;
+use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
 use crate::material::Arrangement;
 use crate::penetration::{self, Hooks, Row};

@@ -8,7 +8,7 @@
 //! that of a uniform disk of that mass, mR²/2.
 
 use crate::error::{Error, Result};
-use crate::kernel::detect::BroadPhase;
+use crate::broad_phase::BroadPhase;
 
 /// An axis-aligned rectangle, m.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize, serde::Serialize)]

@@ -6,6 +6,7 @@
 //! ([`units`]) and every public quantity names its unit.
 
 pub mod analysis;
+pub mod broad_phase;
 pub mod ballistic;
 pub mod bench;
 pub mod calibrate;
@@ -21,12 +22,12 @@ pub use error::{Error, Result};
 pub mod kernel;
 pub mod lattice;
 pub mod material;
-pub mod outcome;
 pub mod penetration;
 pub mod picture;
 pub mod provenance;
 pub mod run;
 pub mod scene;
+pub mod scene_file;
 pub mod shape;
 pub mod sweep;
 pub mod table;

@@ -7,8 +7,8 @@
 mod common;
 
 use demsweep::kernel::contacts::{Bond, Contact};
-use demsweep::kernel::law::compaction::CompactionSpec;
-use demsweep::kernel::law::rate::RateSpec;
+use demsweep::material::CompactionSpec;
+use demsweep::material::RateSpec;
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, Kinematics};
 use demsweep::kernel::{ModelBuilder, boundary};
 use demsweep::lattice::{self, Rect};

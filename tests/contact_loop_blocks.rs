@@ -13,7 +13,7 @@ use demsweep::kernel::forces::{self, CHUNK, Out, Stage};
 use demsweep::kernel::law::rate_field::RateField;
 use demsweep::kernel::law::{self, Dissipation, Extra, PartSet, PartsVisitor};
 use demsweep::kernel::{Model, Threading};
-use demsweep::scene::{SceneFile, load};
+use demsweep::scene_file::{SceneFile, load};
 
 /// What a pass over the contact list leaves: the contacts, their extra slots, their forces and
 /// each chunk's dissipation.

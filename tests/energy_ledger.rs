@@ -51,7 +51,7 @@ fn kinetic_energy_of_prescribed_dofs_was_counted_in_the_balance() {
     // A free element squeezed between a fixed one and a piston moving at 5 m/s, its two bonds
     // compacting. The piston's own kinetic energy is not the model's: counting it left a
     // residual of +2 % of the piston's work that did not shrink with the step.
-    use demsweep::kernel::law::compaction::CompactionSpec;
+    use demsweep::material::CompactionSpec;
     use demsweep::kernel::{ModelBuilder, StepChoice, boundary};
     use demsweep::lattice::Lattice;
     use demsweep::material::{Arrangement, Plane};

@@ -175,8 +175,8 @@ fn bound_covers_a_projectile_pressed_into_a_block_with_every_contact_at_its_stif
     // interface), every bond at the modulus of the rate cap, a patch of broken bonds squeezed
     // shut (frictional contacts in stick), some bonds compacted. The kernel's bound, chosen at
     // build for everything that can happen, must cover the measured top of this state.
-    use demsweep::kernel::law::compaction::CompactionSpec;
-    use demsweep::kernel::law::rate::RateSpec;
+    use demsweep::material::CompactionSpec;
+    use demsweep::material::RateSpec;
     use demsweep::kernel::contacts::Bond;
     use demsweep::material::PoissonPolicy;
     use demsweep::units::psi_to_pa;

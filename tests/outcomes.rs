@@ -2,10 +2,10 @@
 //! and projectile is built, then moved and cut by hand into the situation each definition is
 //! about, and the detector's reading is compared with what the definition says it must be.
 
-use demsweep::cases::penetration::{Layout, OutcomeSpec, PenetrationScene};
+use demsweep::penetration::scene::{Layout, OutcomeSpec, PenetrationScene};
 use demsweep::kernel::Model;
 use demsweep::kernel::contacts::Bond;
-use demsweep::outcome::{Detector, Look, Tracking};
+use demsweep::penetration::outcome::{Detector, Look, Tracking};
 use demsweep::units::M_PER_IN;
 
 /// A 24 in × 6 in beam at level 0 (R = 0.5 in), the seed's projectile 1 in above it.

@@ -9,10 +9,10 @@
 use std::path::Path;
 
 use demsweep::penetration::{Hooks, run};
-use demsweep::scene::{SceneFile, load};
+use demsweep::scene_file::{SceneFile, load};
 use demsweep::table::{Table, row::cells};
 
-fn scene() -> demsweep::cases::penetration::PenetrationScene {
+fn scene() -> demsweep::penetration::scene::PenetrationScene {
     match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration_ci.toml"), &[]).unwrap() {
         SceneFile::Penetration(p) => p,
         SceneFile::Kernel(_) => panic!("the CI scene is a penetration scene"),
@@ -77,7 +77,7 @@ fn doubling_the_weight_deepens_the_penetration_and_the_seed_mapping_refuses_it()
     let heavy = run(&s, Hooks::default()).unwrap().row.outcome.depth_in;
     eprintln!("depth at 500 ft/s: {light:.3} in at 15 lb, {heavy:.3} in at 30 lb");
     assert!(heavy > 1.2 * light, "30 lb {heavy} in, 15 lb {light} in");
-    s.mapping.rule = demsweep::cases::penetration::MappingRule::SeedEffectiveDensity;
+    s.mapping.rule = demsweep::penetration::scene::MappingRule::SeedEffectiveDensity;
     let e = run(&s, Hooks::default()).err().expect("refused").to_string();
     assert!(e.contains("projectile.weight_lb") && e.contains("seed_effective_density"), "{e}");
 }

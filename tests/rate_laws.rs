@@ -5,7 +5,8 @@
 //! a ledger that closes.
 
 use demsweep::kernel::contacts::{Bond, Contact};
-use demsweep::kernel::law::rate::{self, CompressiveRate, RateSpec};
+use demsweep::kernel::law::rate;
+use demsweep::material::{CompressiveRate, RateSpec};
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, Kinematics};
 use demsweep::material::{Arrangement, FailureCriterion, Material, Plane};
 use demsweep::units::psi_to_pa;

@@ -6,8 +6,8 @@
 
 mod common;
 
-use demsweep::kernel::law::compaction::CompactionSpec;
-use demsweep::kernel::law::rate::RateSpec;
+use demsweep::material::CompactionSpec;
+use demsweep::material::RateSpec;
 use demsweep::kernel::{Model, ModelBuilder};
 use demsweep::lattice::{self, Rect};
 use demsweep::material::{Arrangement, FailureCriterion, Plane, PoissonPolicy};

@@ -33,9 +33,9 @@
 
 use std::path::Path;
 
-use demsweep::cases::penetration::PenetrationScene;
+use demsweep::penetration::scene::PenetrationScene;
 use demsweep::penetration::{Hooks, run};
-use demsweep::scene::{SceneFile, load};
+use demsweep::scene_file::{SceneFile, load};
 
 fn ci_scene() -> PenetrationScene {
     match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration_ci.toml"), &[]).unwrap() {
@@ -50,7 +50,7 @@ fn at(safety: f64, strength: f64) -> (f64, f64, f64, u64) {
     let mut s = ci_scene();
     s.projectile.v0_fps = 300.0;
     s.target.arrangement = demsweep::material::Arrangement::ClosePacked;
-    s.mapping.rule = demsweep::cases::penetration::MappingRule::SeedEffectiveDensity;
+    s.mapping.rule = demsweep::penetration::scene::MappingRule::SeedEffectiveDensity;
     s.projectile.element_radius_in = 0.15544;
     s.penetration.safety = safety;
     s.concrete.strength_factor *= strength;

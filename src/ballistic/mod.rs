@@ -28,7 +28,7 @@ use std::path::{Path, PathBuf};
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::scene::SceneFile;
+use crate::scene_file::SceneFile;
 use crate::scene::overrides::Override;
 use crate::provenance::build_id;
 use crate::sweep::job::{Base, Job};

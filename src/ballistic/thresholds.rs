@@ -7,7 +7,7 @@
 use super::bracket::{Bracket, Finding};
 use super::fit::Fit;
 use super::v50::V50;
-use crate::cases::penetration::PenetrationScene;
+use crate::penetration::scene::PenetrationScene;
 use crate::empirical::{Missile, Nose as EmpiricalNose, Target, table as empirical_table};
 use crate::error::Result;
 use crate::shape::Nose;

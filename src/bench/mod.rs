@@ -12,8 +12,8 @@ use std::time::Instant;
 
 use crate::cases::seed;
 use crate::error::Result;
-use crate::kernel::law::compaction::CompactionSpec;
-use crate::kernel::law::rate::RateSpec;
+use crate::material::CompactionSpec;
+use crate::material::RateSpec;
 use crate::kernel::{Model, ModelBuilder};
 use crate::lattice::{self, Rect};
 use crate::material::{Arrangement, Material, Plane};

@@ -7,6 +7,5 @@
 pub mod cantilever;
 pub mod cracked_plate;
 pub mod fit;
-pub mod penetration;
 pub mod seed;
 pub mod study;

@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use crate::calibrate::{Target, Trial, calibrate, calibrated_text};
 use crate::error::{Error, Result};
-use crate::scene::SceneFile;
+use crate::scene_file::SceneFile;
 
 /// Arguments of `demsweep calibrate`.
 #[derive(Debug, clap::Args)]
@@ -33,7 +33,7 @@ pub struct Args {
 
 /// Calibrate and write.
 pub fn run(args: Args) -> Result<()> {
-    let scene = match crate::scene::load(&args.scene, &[])? {
+    let scene = match crate::scene_file::load(&args.scene, &[])? {
         SceneFile::Penetration(p) => p,
         SceneFile::Kernel(_) => return Err(Error::input("--scene", format!("{} is not a penetration scene ([penetration])", args.scene.display()))),
     };
@@ -71,7 +71,7 @@ pub fn run(args: Args) -> Result<()> {
     let text = std::fs::read_to_string(&args.scene).map_err(|e| Error::io(&args.scene, e))?;
     let written = calibrated_text(&text, c.factor, &comment);
     // The written scene must read back as the scene that was calibrated.
-    match crate::scene::load_text(&written, &out, &[])? {
+    match crate::scene_file::load_text(&written, &out, &[])? {
         SceneFile::Penetration(p) if p.concrete.strength_factor == c.factor => {}
         _ => return Err(Error::input("calibrate", "the calibrated scene does not read back with its factor")),
     }
@@ -85,7 +85,7 @@ pub fn run(args: Args) -> Result<()> {
 
 /// What the factor means: the effective static tensile strength and toughness it gives the
 /// concrete, beside f'c.
-fn meaning(scene: &crate::cases::penetration::PenetrationScene, factor: f64) -> String {
+fn meaning(scene: &crate::penetration::scene::PenetrationScene, factor: f64) -> String {
     let c = &scene.concrete;
     let sigma = factor * c.tensile_strength_psi;
     format!(

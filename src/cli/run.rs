@@ -5,7 +5,8 @@ use std::path::PathBuf;
 
 use crate::error::{Error, Result};
 use crate::run::{Checkpointing, RunCheckpoint};
-use crate::scene::{SceneFile, overrides::Override};
+use crate::scene::overrides::Override;
+use crate::scene_file::SceneFile;
 use crate::table::Table;
 
 /// Arguments of `demsweep run`.
@@ -56,13 +57,13 @@ fn print(summary: &Table, dir: &std::path::Path) {
 /// written atomically.
 pub fn run(args: Args) -> Result<()> {
     let overrides: Vec<Override> = args.set.iter().map(|s| Override::parse(s)).collect::<Result<_>>()?;
-    match crate::scene::load(&args.scene, &overrides)? {
+    match crate::scene_file::load(&args.scene, &overrides)? {
         SceneFile::Kernel(scene) => run_kernel(&args, scene),
         SceneFile::Penetration(scene) => run_penetration(&args, scene),
     }
 }
 
-fn run_penetration(args: &Args, scene: crate::cases::penetration::PenetrationScene) -> Result<()> {
+fn run_penetration(args: &Args, scene: crate::penetration::scene::PenetrationScene) -> Result<()> {
     if args.checkpoint_every_steps > 0 || args.resume {
         return Err(Error::input("--checkpoint-every-steps", "checkpoints are for kernel scenes; a penetration run takes seconds"));
     }

@@ -10,7 +10,8 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::kernel::{Model, stability};
-use crate::scene::{SceneFile, overrides::Override};
+use crate::scene::overrides::Override;
+use crate::scene_file::SceneFile;
 use crate::table::Table;
 
 /// Arguments of `demsweep timestep`.
@@ -66,7 +67,7 @@ fn measure(m: &Model, iterations: usize) -> Row {
 /// Run the scene and measure.
 pub fn run(args: Args) -> Result<()> {
     let overrides: Vec<Override> = args.set.iter().map(|s| Override::parse(s)).collect::<Result<_>>()?;
-    let scene = match crate::scene::load(&args.scene, &overrides)? {
+    let scene = match crate::scene_file::load(&args.scene, &overrides)? {
         SceneFile::Penetration(s) => s,
         SceneFile::Kernel(_) => return Err(Error::input("scene", "timestep takes a penetration scene")),
     };

@@ -219,7 +219,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
 
 fn penetration(plan: &Plan) -> Result<Vec<Level>> {
     let base = Base::load(&plan.scene)?;
-    let crate::scene::SceneFile::Penetration(scene) = &base.scene else {
+    let crate::scene_file::SceneFile::Penetration(scene) = &base.scene else {
         return Err(Error::input(plan.scene.display().to_string(), "converge --case penetration needs a penetration scene"));
     };
     let r0_m = {

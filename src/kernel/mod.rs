@@ -3,7 +3,7 @@
 //! 1. **contact processing** (`forces`): every contact's force from the current positions,
 //!    added to its two elements (`pieces` on the pool);
 //! 2. **element motion** (`integrate`): summed forces, central-difference update, blow-up watch;
-//! 3. **contact detection** (`detect`, `neighbours`): when an element has drifted further than
+//! 3. **contact detection** (`crate::broad_phase`, `neighbours`): when an element has drifted further than
 //!    its neighbour margin since the last rebuild, rebuild the candidate pairs, keeping bonds
 //!    and frictional contacts with their history.
 //!
@@ -16,7 +16,6 @@ pub mod boundary;
 pub mod build;
 pub mod checkpoint;
 pub mod contacts;
-pub mod detect;
 pub mod bonds4;
 pub mod mixed4;
 pub mod energy;
@@ -91,7 +90,7 @@ pub enum Threading {
 
 #[derive(Debug, Clone, Default)]
 struct Scratch {
-    broad: detect::BroadPhase,
+    broad: crate::broad_phase::BroadPhase,
     pairs: Vec<(u32, u32)>,
     diss_partial: Vec<Dissipation>,
     motion_partial: Vec<MotionReport>,

@@ -5,7 +5,7 @@ use std::ops::Range;
 
 use plotters::prelude::*;
 
-use crate::cases::penetration::PenetrationScene;
+use crate::penetration::scene::PenetrationScene;
 use crate::error::Result;
 use crate::kernel::Model;
 use crate::units::M_PER_IN;

@@ -15,7 +15,7 @@ mod vtk;
 
 use std::path::{Path, PathBuf};
 
-use crate::cases::penetration::PenetrationScene;
+use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
 use crate::kernel::Model;
 use crate::kernel::contacts::Bond;

@@ -324,49 +324,6 @@ pub fn parse<T: serde::de::DeserializeOwned>(text: &str, origin: &Path) -> Resul
     })
 }
 
-/// What a scene file describes.
-#[derive(Debug, Clone, PartialEq)]
-pub enum SceneFile {
-    /// A kernel scene: materials, bodies, groups, probes.
-    Kernel(Scene),
-    /// A penetration scene (`[penetration]`), which builds its own kernel scene.
-    Penetration(crate::cases::penetration::PenetrationScene),
-}
-
-/// Read a scene document from `text` with `overrides` applied (`--set`), as a file would be.
-pub fn load_text(text: &str, origin: &Path, overrides: &[overrides::Override]) -> Result<SceneFile> {
-    let mut doc: toml::Table = parse(text, origin)?;
-    for o in overrides {
-        overrides::apply(&mut doc, o).map_err(|e| e.in_file(origin))?;
-    }
-    // Read the changed document back from text, so that every error names its field.
-    let text = if overrides.is_empty() { text.to_string() } else { toml::to_string(&doc).expect("a TOML table serialises") };
-    let blame = |e: Error| match e {
-        Error::Input { file, field, message } => {
-            let set = overrides.iter().find(|o| field.starts_with(&o.field) || o.field.starts_with(&field));
-            let message = match set {
-                Some(o) => format!("{message} (given by --set {}={})", o.field, o.value),
-                None => message,
-            };
-            Error::Input { file, field, message }
-        }
-        other => other,
-    };
-    if doc.contains_key("penetration") {
-        let p: crate::cases::penetration::PenetrationScene = parse(&text, origin).map_err(blame)?;
-        p.validate().map_err(|e| blame(e.in_file(origin)))?;
-        Ok(SceneFile::Penetration(p))
-    } else {
-        Ok(SceneFile::Kernel(Scene::from_toml(&text, origin).map_err(blame)?))
-    }
-}
-
-/// Read a scene file with `overrides` applied.
-pub fn load(path: &Path, overrides: &[overrides::Override]) -> Result<SceneFile> {
-    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
-    load_text(&text, path, overrides)
-}
-
 impl Scene {
     /// Parse TOML text; `origin` names the file in messages.
     pub fn from_toml(text: &str, origin: &Path) -> Result<Scene> {

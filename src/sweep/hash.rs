@@ -5,7 +5,7 @@
 //! another one; [`crate::provenance::build_id`]).
 
 use crate::fnv::fnv1a;
-use crate::scene::SceneFile;
+use crate::scene_file::SceneFile;
 
 /// The canonical text of a scene.
 pub fn canonical(scene: &SceneFile) -> String {

@@ -5,7 +5,8 @@ use std::path::{Path, PathBuf};
 use crate::error::{Error, Result};
 use crate::kernel::Threading;
 use crate::run::Lend;
-use crate::scene::{SceneFile, load_text, overrides::Override};
+use crate::scene::overrides::Override;
+use crate::scene_file::{SceneFile, load_text};
 
 /// The scene a sweep varies, read once.
 #[derive(Debug, Clone)]

@@ -4,6 +4,12 @@
 //! E, ν, σ_ult, f'c and K_Ic and the element size, so a refined mesh needs no re-calibration.
 //! Everything here is per unit of the model's out-of-plane thickness `t` (the caller passes it).
 
+pub mod compaction_spec;
+pub mod rate_spec;
+
+pub use compaction_spec::CompactionSpec;
+pub use rate_spec::{CompressiveRate, RateSpec};
+
 use crate::error::{Error, Result};
 
 /// 2D idealisation of the out-of-plane direction (seed eq 1.4–1.5).
@@ -116,10 +122,10 @@ pub struct Material {
     pub poisson_policy: PoissonPolicy,
     /// Strain-rate effects on this material's bonds (seed §6, eq 6.6–6.15); off when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub rate: Option<crate::kernel::law::rate::RateSpec>,
+    pub rate: Option<RateSpec>,
     /// Compaction of this material's bonds in compression (eq 6.11, Fig 6.1); off when absent.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub compaction: Option<crate::kernel::law::compaction::CompactionSpec>,
+    pub compaction: Option<CompactionSpec>,
 }
 
 fn default_friction() -> f64 {
@@ -371,8 +377,23 @@ impl Material {
 mod tests {
     use super::*;
 
+    /// The seed's concrete (§5, Table 5.1), as the cracked plate uses it.
     fn concrete() -> Material {
-        crate::cases::cracked_plate::material(FailureCriterion::StrengthEnergy)
+        Material {
+            name: "concrete".into(),
+            density_kg_per_m3: 2400.0,
+            youngs_modulus_pa: 29.7e9,
+            poisson_ratio: 0.3,
+            tensile_strength_pa: 3.44e6,
+            compressive_strength_pa: 34.4e6,
+            fracture_toughness_pa_sqrt_m: 1.0e6,
+            friction_coefficient: 0.5,
+            cohesion_n_per_m: 0.0,
+            failure: FailureCriterion::StrengthEnergy,
+            poisson_policy: PoissonPolicy::Refuse,
+            rate: None,
+            compaction: None,
+        }
     }
 
     #[test]

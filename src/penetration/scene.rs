@@ -25,11 +25,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::seed;
+use crate::cases::seed;
 use crate::error::{Error, Result};
 use crate::kernel::boundary::Profile;
-use crate::kernel::law::compaction::CompactionSpec;
-use crate::kernel::law::rate::RateSpec;
+use crate::material::CompactionSpec;
+use crate::material::RateSpec;
 use crate::lattice::{self, Rect};
 use crate::material::{Arrangement, Material, Plane};
 use crate::scene::{self, BodySpec, Damping, FixSpec, OutputSpec, Scene, TimeStep};
@@ -428,7 +428,7 @@ pub struct Mapping {
     pub thickness_in: Option<f64>,
 }
 
-/// `[outcome]`: the thresholds the outcome definitions need (`crate::outcome`).
+/// `[outcome]`: the thresholds the outcome definitions need (`crate::penetration::outcome`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct OutcomeSpec {
@@ -438,7 +438,7 @@ pub struct OutcomeSpec {
     pub separation_fps: f64,
     /// A run is settled once the projectile has stopped or turned back and the attached target
     /// has lost no bond for this long, or once the projectile has been clear of the back face
-    /// for this long (`crate::outcome`), s.
+    /// for this long (`crate::penetration::outcome`), s.
     #[serde(default = "default_quiet")]
     pub quiet_s: f64,
     /// Steps between outcome checks.
@@ -446,7 +446,7 @@ pub struct OutcomeSpec {
     pub check_every_steps: u64,
     /// A projectile going on into the target whose axial speed stays within `unresisted_change`
     /// of itself for `unresisted_s` is unresisted: the target cannot stop it
-    /// (`crate::outcome`). Fraction; s.
+    /// (`crate::penetration::outcome`). Fraction; s.
     #[serde(default = "default_unresisted")]
     pub unresisted_change: f64,
     #[serde(default = "default_unresisted_s")]

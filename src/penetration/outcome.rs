@@ -42,20 +42,20 @@
 //!   depending only on how long it waited. A run that never settles ends at its time cap
 //!   (`time_cap`); the outcome is then what was seen up to the cap.
 
-pub mod fragments;
 
 use std::ops::Range;
 
 use serde::{Deserialize, Serialize};
 
-use crate::cases::penetration::{Layout, OutcomeSpec};
+use crate::penetration::scene::{Layout, OutcomeSpec};
 use crate::error::{Error, Result};
 use crate::kernel::Model;
 use crate::kernel::contacts::Bond;
 use crate::run::StopRule;
 use crate::units::{M_PER_IN, fps_to_mps, kg_to_lb, mps_to_fps};
 
-pub use fragments::{Fragment, UnionFind};
+use super::fragments;
+pub use super::fragments::{Fragment, UnionFind};
 
 /// The outcome of a run, as the summary row reports it.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -1,12 +1,12 @@
-//! A penetration run: the scene of `cases::penetration`, run until its outcome is settled
+//! A penetration run: the scene of `penetration::scene`, run until its outcome is settled
 //! (`outcome::Detector` as the stop rule), reported as one typed row.
 
 use serde::Serialize;
 
-use crate::cases::penetration::PenetrationScene;
+use crate::penetration::scene::PenetrationScene;
 use crate::error::Result;
 use crate::kernel::{Model, Threading};
-use crate::outcome::{Detector, Outcome};
+use crate::penetration::outcome::{Detector, Outcome};
 use crate::run::{self, RunSummary};
 use crate::units::M_PER_IN;
 

@@ -1,0 +1,16 @@
+//! The product's scene: a concrete target struck by a projectile, run until its outcome is
+//! settled. One room for its three parts, in the order data flows through them:
+//! * [`scene`]: the scene file's fields (seed 000 §7, Tables 7.1–7.2), checked, and the kernel
+//!   scene they build;
+//! * [`run`](mod@run): the kernel run with the outcome detector as its stop rule, reported as
+//!   one typed row;
+//! * [`outcome`] and [`fragments`]: what the run did to the target (depth, scabbing,
+//!   perforation, spall) and when it is settled, from positions and bonds.
+
+pub mod fragments;
+pub mod outcome;
+pub mod run;
+pub mod scene;
+
+pub use run::{Finished, Hooks, Row, run};
+pub use scene::PenetrationScene;

@@ -1,0 +1,54 @@
+//! A scene file as read: a kernel scene (`crate::scene`) or a penetration scene
+//! (`crate::penetration`), told apart by its tables, with the command line's `--set` applied.
+//! It sits above both, so that neither imports the other.
+
+use std::path::Path;
+
+use crate::error::{Error, Result};
+use crate::penetration::PenetrationScene;
+use crate::scene::overrides::{Override, apply};
+use crate::scene::{Scene, parse};
+
+/// What a scene file describes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SceneFile {
+    /// A kernel scene: materials, bodies, groups, probes.
+    Kernel(Scene),
+    /// A penetration scene (`[penetration]`), which builds its own kernel scene.
+    Penetration(PenetrationScene),
+}
+
+/// Read a scene document from `text` with `overrides` applied (`--set`), as a file would be.
+pub fn load_text(text: &str, origin: &Path, overrides: &[Override]) -> Result<SceneFile> {
+    let mut doc: toml::Table = parse(text, origin)?;
+    for o in overrides {
+        apply(&mut doc, o).map_err(|e| e.in_file(origin))?;
+    }
+    // Read the changed document back from text, so that every error names its field.
+    let text = if overrides.is_empty() { text.to_string() } else { toml::to_string(&doc).expect("a TOML table serialises") };
+    let blame = |e: Error| match e {
+        Error::Input { file, field, message } => {
+            let set = overrides.iter().find(|o| field.starts_with(&o.field) || o.field.starts_with(&field));
+            let message = match set {
+                Some(o) => format!("{message} (given by --set {}={})", o.field, o.value),
+                None => message,
+            };
+            Error::Input { file, field, message }
+        }
+        other => other,
+    };
+    if doc.contains_key("penetration") {
+        let p: PenetrationScene = parse(&text, origin).map_err(blame)?;
+        p.validate().map_err(|e| blame(e.in_file(origin)))?;
+        Ok(SceneFile::Penetration(p))
+    } else {
+        Ok(SceneFile::Kernel(Scene::from_toml(&text, origin).map_err(blame)?))
+    }
+}
+
+/// Read a scene file with `overrides` applied.
+pub fn load(path: &Path, overrides: &[Override]) -> Result<SceneFile> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error::io(path, e))?;
+    load_text(&text, path, overrides)
+}
+
