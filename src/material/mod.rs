@@ -377,23 +377,13 @@ impl Material {
 mod tests {
     use super::*;
 
-    /// The seed's concrete (§5, Table 5.1), as the cracked plate uses it.
+    /// The seed's concrete (§5, Table 5.1), as the cracked plate uses it, read as a scene file
+    /// gives a material.
     fn concrete() -> Material {
-        Material {
-            name: "concrete".into(),
-            density_kg_per_m3: 2400.0,
-            youngs_modulus_pa: 29.7e9,
-            poisson_ratio: 0.3,
-            tensile_strength_pa: 3.44e6,
-            compressive_strength_pa: 34.4e6,
-            fracture_toughness_pa_sqrt_m: 1.0e6,
-            friction_coefficient: 0.5,
-            cohesion_n_per_m: 0.0,
-            failure: FailureCriterion::StrengthEnergy,
-            poisson_policy: PoissonPolicy::Refuse,
-            rate: None,
-            compaction: None,
-        }
+        let text = "name = \"concrete\"\ndensity_kg_per_m3 = 2400.0\nyoungs_modulus_pa = 29.7e9\npoisson_ratio = 0.3\n\
+                    tensile_strength_pa = 3.44e6\ncompressive_strength_pa = 34.4e6\nfracture_toughness_pa_sqrt_m = 1.0e6\n\
+                    friction_coefficient = 0.5\nfailure = \"strength_energy\"\n";
+        toml::from_str(text).expect("a material")
     }
 
     #[test]
