@@ -36,3 +36,16 @@ pub fn richardson_row(t: &Table, figure: &str, alpha: f64) -> (f64, f64) {
 pub fn assert_matches(live: f64, golden: f64, what: &str) {
     assert!((live / golden - 1.0).abs() < 1e-6, "{what}: live {live:.9e} vs golden {golden:.9e}");
 }
+
+/// A figure at levels 0, 1 and 2, run now (level 2 is too slow for CI: the tests that call
+/// this are `#[ignore]`d and run in `scripts/validation.sh`).
+pub fn live_levels(figure_at: impl Fn(u32) -> f64) -> Vec<(u32, f64)> {
+    (0..=2).map(|l| (l, figure_at(l))).collect()
+}
+
+/// The Richardson extrapolate and observed order of three levels refined by `alpha`.
+pub fn richardson_of(v: &[(u32, f64)], alpha: f64) -> (f64, f64) {
+    assert_eq!(v.len(), 3, "three levels");
+    let c = richardson([v[0].1, v[1].1, v[2].1], alpha).expect("convergent");
+    (c.extrapolate, c.order)
+}
