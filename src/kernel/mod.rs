@@ -17,12 +17,12 @@ pub mod build;
 pub mod checkpoint;
 pub mod contacts;
 pub mod detect;
-pub mod bonds4;
-pub mod mixed4;
 pub mod energy;
 pub mod forces;
 pub mod geometry;
+pub mod groups;
 pub mod integrate;
+pub mod lanes;
 pub mod law;
 pub mod neighbours;
 pub mod pieces;
@@ -151,8 +151,9 @@ pub struct Model {
     /// on it; smaller pieces balance the threads better and send more contributions through the
     /// serial fix-up.
     pub scatter_piece_contacts: usize,
-    /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
-    /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
+    /// Take the contacts four at a time where the law parts allow (`groups`, on the widest
+    /// `lanes` the processor has; the same bits as one at a time). Off only to measure what it
+    /// gains.
     pub four_lanes: bool,
     /// The rate part's smoothed velocity field (`law::rate_field`): its grid is configuration,
     /// its values are remade from the state at every step.
