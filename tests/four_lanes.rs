@@ -113,13 +113,15 @@ fn four_elastic_bonds(width: Width) {
     assert!(taken > 100 && refused > 100, "both outcomes must occur: {taken} taken, {refused} refused");
 }
 
-/// Bits of the small impact after `steps` steps, with or without the four-lane path, on one
-/// thread (the scatter) or on a pool of two (the scatter in pieces, `kernel::pieces`).
-fn impact_bits(four_lanes: bool, threads: usize, steps: u64) -> (Vec<u64>, u64, f64) {
+/// Bits of the small impact after `steps` steps, with the four-lane paths on lanes `width` or
+/// without them (None), on one thread (the scatter) or on a pool of two (the scatter in pieces,
+/// `kernel::pieces`).
+fn impact_bits(width: Option<Width>, threads: usize, steps: u64) -> (Vec<u64>, u64, f64) {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     pool.install(|| {
         let mut m = common::impact::model();
-        m.four_lanes = four_lanes;
+        m.four_lanes = width.is_some();
+        m.lane_width = width.unwrap_or(Width::Portable);
         if threads == 1 {
             m.threading = Threading::Serial;
         }
@@ -131,12 +133,14 @@ fn impact_bits(four_lanes: bool, threads: usize, steps: u64) -> (Vec<u64>, u64, 
 #[test]
 fn a_run_with_four_bonds_at_once_is_bitwise_the_run_one_at_a_time() {
     let steps = 1500;
-    let (scalar, broken, plastic_j) = impact_bits(false, 1, steps);
+    let (scalar, broken, plastic_j) = impact_bits(None, 1, steps);
     assert!(broken > 100 && plastic_j > 0.0, "bonds must yield and break: {broken} broken, {plastic_j} J plastic work");
-    for threads in [1, 2] {
-        assert!(impact_bits(true, threads, steps).0 == scalar, "four lanes on {threads} thread(s) differ from one bond at a time");
+    for w in lanes::widths() {
+        for threads in [1, 2] {
+            assert!(impact_bits(Some(w), threads, steps).0 == scalar, "four {w:?} lanes on {threads} thread(s) differ from one bond at a time");
+        }
     }
-    assert!(impact_bits(false, 2, steps).0 == scalar, "the pool one bond at a time differs from one thread");
+    assert!(impact_bits(None, 2, steps).0 == scalar, "the pool one bond at a time differs from one thread");
 }
 
 /// Friction on, no other optional part: the parts of the small impact, whose cracked target

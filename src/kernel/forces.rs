@@ -55,6 +55,8 @@ pub struct Stage<'a> {
     pub record: bool,
     /// Take the contacts four at a time where the parts allow ([`groups`]).
     pub four_lanes: bool,
+    /// The lanes they go on.
+    pub lane_width: lanes::Width,
     /// The rate part's smoothed velocities per element, m/s (`law::rate_field`; empty: none).
     pub rate_vel: &'a [[f64; 2]],
 }
@@ -73,8 +75,8 @@ impl law::PartsVisitor for Stage<'_> {
     type Output = ();
     #[inline(never)]
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes, rate_vel } = self;
-        let at = &StepInput { pos, vel, dt_s, classes, rate_vel };
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes, lane_width, rate_vel } = self;
+        let at = &StepInput { pos, vel, dt_s, classes, rate_vel, width: lane_width };
         let four = four_lanes && lanes_apply::<P>();
         match out {
             Out::Stored if four => parallel::<P, true>(at, list, extra, force, partial),
@@ -84,8 +86,8 @@ impl law::PartsVisitor for Stage<'_> {
             Out::Serial(sums) => {
                 let sums = Serial::new(sums);
                 match (record, four) {
-                    (true, true) => lanes::run(ScatterFour::<P, true, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
-                    (false, true) => lanes::run(ScatterFour::<P, false, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
+                    (true, true) => lanes::run_as(at.width, ScatterFour::<P, true, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
+                    (false, true) => lanes::run_as(at.width, ScatterFour::<P, false, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
                     (true, false) => scatter_alone::<P, true, _>(at, list, extra, force, partial, sums),
                     (false, false) => scatter_alone::<P, false, _>(at, list, extra, force, partial, sums),
                 }
@@ -120,6 +122,8 @@ struct StepInput<'a> {
     /// The rate part's smoothed velocities [vx, vy], m/s, per element (`law::rate_field`);
     /// empty: each bond's rate reads its own pair's velocity.
     rate_vel: &'a [[f64; 2]],
+    /// The lanes of the groups of four.
+    width: lanes::Width,
 }
 
 /// Several threads: each contact's force into `force`, chunk by chunk.
@@ -128,7 +132,7 @@ fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contac
     let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
         *d = Dissipation::default();
         if FOUR {
-            return lanes::run(ChunkFour::<P> { at, cs, xs, fs, d, parts: PhantomData });
+            return lanes::run_as(at.width, ChunkFour::<P> { at, cs, xs, fs, d, parts: PhantomData });
         }
         each::<P, lanes::Portable, false>(at, cs, xs, d, |k, _, f| fs[k] = *f);
     };
@@ -206,7 +210,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
     spans::run(jobs, starts, |((((cs, fs), ds), xs), ((rs, s), r))| {
         let out = pieces::PieceSums::new(s, r.start, rs, n_elements);
         if FOUR {
-            return lanes::run(ScatterFour::<P, RECORD, _> { at, list: cs, extra: xs, force: fs, partial: ds, out, parts: PhantomData });
+            return lanes::run_as(at.width, ScatterFour::<P, RECORD, _> { at, list: cs, extra: xs, force: fs, partial: ds, out, parts: PhantomData });
         }
         scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
     });

@@ -186,6 +186,8 @@ pub struct Motion<'a> {
     /// On the pool, in spans of chunks, one per thread (`spans`): the chunk each span starts
     /// at, from 0, then the number of chunks. None: on this thread.
     pub spans: Option<&'a [usize]>,
+    /// The lanes the free elements go on, four at a time.
+    pub lane_width: lanes::Width,
 }
 
 /// Advance every element by one step. `parts.frame`: the mass-proportional damping acts on the
@@ -265,9 +267,9 @@ struct Free<'a> {
 
 impl Free<'_> {
     /// The update, then its checks: (some element too fast, some drifted past its margin), four
-    /// elements at a time on the widest lanes the processor has.
-    fn advance(self) -> (bool, bool) {
-        lanes::run(self)
+    /// elements at a time on lanes `width`.
+    fn advance(self, width: lanes::Width) -> (bool, bool) {
+        lanes::run_as(width, self)
     }
 
     /// [`Free::advance`] in groups of `R::LANES` elements, the update and its checks in one
@@ -357,7 +359,7 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans } = m;
+    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans, lane_width } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
@@ -402,7 +404,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
                     margin: &margin[a..b],
                     limit2,
                 };
-                let (b1, d1) = free.advance();
+                let (b1, d1) = free.advance(lane_width);
                 bad |= b1;
                 drifted |= d1;
                 o = b;

@@ -155,6 +155,10 @@ pub struct Model {
     /// `lanes` the processor has; the same bits as one at a time). Off only to measure what it
     /// gains.
     pub four_lanes: bool,
+    /// The lanes of the four-at-a-time paths, contacts and free elements alike: the widest the
+    /// processor has (`lanes::widest`); the portable ones to check them in whole runs (the
+    /// same bits).
+    pub lane_width: lanes::Width,
     /// The rate part's smoothed velocity field (`law::rate_field`): its grid is configuration,
     /// its values are remade from the state at every step.
     pub rate_field: law::rate_field::RateField,
@@ -257,6 +261,7 @@ impl Model {
             out,
             record: self.record_contact_forces,
             four_lanes: self.four_lanes,
+            lane_width: self.lane_width,
             rate_vel: &self.rate_field.vel_mps,
         };
         self.parts.dispatch(stage);
@@ -306,6 +311,7 @@ impl Model {
             p,
             partial: &mut s.motion_partial,
             spans,
+            lane_width: self.lane_width,
         };
         integrate::advance(parts, motion);
         let mut total = MotionReport::default();
@@ -404,6 +410,7 @@ impl Model {
             out: forces::Out::Stored,
             record: true,
             four_lanes: self.four_lanes,
+            lane_width: self.lane_width,
             rate_vel: &self.rate_field.vel_mps,
         };
         Parts { damping: false, ..self.parts }.dispatch(stage);

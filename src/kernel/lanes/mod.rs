@@ -263,10 +263,16 @@ pub fn widths() -> Vec<Width> {
     if has_avx() { vec![Width::Portable, Width::Avx] } else { vec![Width::Portable] }
 }
 
+/// The widest lanes this processor has.
+#[inline]
+pub fn widest() -> Width {
+    if has_avx() { Width::Avx } else { Width::Portable }
+}
+
 /// Run `t` on the widest lanes this processor has.
 #[inline(always)]
 pub fn run<T: Task>(t: T) -> T::Output {
-    run_as(if has_avx() { Width::Avx } else { Width::Portable }, t)
+    run_as(widest(), t)
 }
 
 /// Run `t` on lanes `w` (AVX only where the processor has it: else the portable ones).
