@@ -106,10 +106,8 @@ impl Census {
                 n.intact += 1;
                 continue;
             }
-            let (a, b) = (pos[c.i as usize], pos[c.j as usize]);
-            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-            let sum = m.classes[c.class as usize].radius_sum_m;
-            if c.ut_m == 0.0 && c.rest_m == sum && dx * dx + dy * dy >= c.rest_m * c.rest_m {
+            let d2_m2 = demsweep::kernel::geometry::separation(pos, c).d2_m2;
+            if demsweep::kernel::law::friction::idle(c.ut_m, c.rest_m, m.classes[c.class as usize].radius_sum_m, d2_m2) {
                 n.apart += 1;
             } else {
                 n.touching += 1;
