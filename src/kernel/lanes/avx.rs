@@ -23,7 +23,7 @@ pub fn available() -> bool {
     std::arch::is_x86_feature_detected!("avx")
 }
 
-/// `t` on [`Avx4`]; the caller checked [`available`] (else the portable lanes run).
+/// `t` on [`Avx4`] where the processor has AVX, else on the portable lanes.
 #[inline(always)]
 pub fn run<T: Task>(t: T) -> T::Output {
     if !available() {

@@ -279,7 +279,7 @@ pub fn run<T: Task>(t: T) -> T::Output {
 #[inline(always)]
 pub fn run_as<T: Task>(w: Width, t: T) -> T::Output {
     #[cfg(target_arch = "x86_64")]
-    if w == Width::Avx && avx::available() {
+    if w == Width::Avx {
         return avx::run(t);
     }
     let _ = w;
