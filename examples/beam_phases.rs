@@ -1,8 +1,8 @@
 //! Where the peers' beam spends its steps: per window of steps, the kinds of contact the
 //! contact stage meets and the time per step on one thread, with the four-contact lanes and one
 //! contact at a time. The beam breaks three quarters of its bonds in 5 000 steps: runs of four
-//! intact bonds go through `bonds4`, the other groups of one class (bonds and frictional pairs
-//! mixed at random as it cracks) through `mixed4`. This prints what each window holds and what
+//! intact bonds go through `groups::bonds`, the other groups of one class (bonds and frictional
+//! pairs mixed at random as it cracks) through `groups::mixed`. This prints what each window holds and what
 //! the lanes gain there (issue [6/6]).
 //!
 //! usage: cargo run --release --example beam_phases -- [SCENE] [WINDOW_STEPS] [REPEATS]
@@ -12,7 +12,7 @@
 //!                 start (the median is printed), so the machine's spells hit every window alike
 //!
 //! Columns, each a share of all contacts at the window's start: intact bonds, intact bonds in
-//! the aligned groups of four the lanes take (`bonds4::eligible`), frictional pairs apart with
+//! the aligned groups of four the lanes take (`groups::eligible`), frictional pairs apart with
 //! nothing to forget (settled in line), the other frictional pairs (touching, or holding a shear
 //! spring); then ms per step with the lanes, one contact at a time (`Model::four_lanes` off),
 //! and the ratio. The copies must end bitwise equal, with and without the lanes (checked): the
@@ -21,7 +21,7 @@
 use std::time::Instant;
 
 use demsweep::kernel::Threading;
-use demsweep::kernel::bonds4;
+use demsweep::kernel::groups;
 use demsweep::kernel::contacts::Bond;
 
 fn main() {
@@ -97,19 +97,17 @@ impl Census {
         let mut n = Census { contacts: cs.len() as u64, intact: 0, in_runs: 0, apart: 0, touching: 0 };
         // The lanes take aligned groups of four within each chunk of the contact stage.
         for chunk in cs.chunks(demsweep::kernel::forces::CHUNK) {
-            let groups = chunk.chunks_exact(bonds4::LANES).filter(|&g| bonds4::eligible(g.try_into().expect("a group of four")));
-            n.in_runs += (groups.count() * bonds4::LANES) as u64;
+            let runs = chunk.chunks_exact(groups::LANES).filter(|&g| groups::eligible(g.try_into().expect("a group of four")));
+            n.in_runs += (runs.count() * groups::LANES) as u64;
         }
-        // The contact stage's in-line test (`forces::apart_with_nothing_to_forget`, private).
+        // The contact stage's in-line test (`law::friction::idle`).
         for c in cs {
             if c.bond == Bond::Intact {
                 n.intact += 1;
                 continue;
             }
-            let (a, b) = (pos[c.i as usize], pos[c.j as usize]);
-            let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-            let sum = m.classes[c.class as usize].radius_sum_m;
-            if c.ut_m == 0.0 && c.rest_m == sum && dx * dx + dy * dy >= c.rest_m * c.rest_m {
+            let d2_m2 = demsweep::kernel::geometry::separation(pos, c).d2_m2;
+            if demsweep::kernel::law::friction::idle(c.ut_m, c.rest_m, m.classes[c.class as usize].radius_sum_m, d2_m2) {
                 n.apart += 1;
             } else {
                 n.touching += 1;

@@ -6,7 +6,7 @@
 //!
 //! One all-bonded close-packed block (no breakage, undamped, a random initial velocity field),
 //! the bond law's elastic branch (normal spring, incremental shear spring, the plateau tests)
-//! on four AVX lanes written out here as in `kernel::bonds4`, central differences. Variants:
+//! on four AVX lanes written out here as `kernel::groups` takes it, central differences. Variants:
 //! - `gathered`: demsweep's way — the (i, j)-sorted list in groups of four consecutive
 //!   contacts, rows gathered by index, the sums added contact by contact with i's running sum
 //!   held (`forces::Serial`);

@@ -57,6 +57,7 @@ impl PartsVisitor for Both<'_> {
             out: Out::Stored,
             record: true,
             four_lanes: false,
+            lane_width: demsweep::kernel::lanes::widest(),
             rate_vel: &m.rate_field.vel_mps,
         };
         stage.visit::<P>();

@@ -1,11 +1,48 @@
-//! The four-bond path (`kernel::bonds4`) against the scalar bond law: the same bits, group by
-//! group and over whole runs where bonds yield, break and fragments slide.
+//! The groups of four (`kernel::groups`) against the scalar laws: the same bits, group by group
+//! on every lane type the processor runs (the portable lanes everywhere), and over whole runs
+//! where bonds yield, break and fragments slide.
 
 mod common;
 
-use demsweep::kernel::contacts::{Bond, Contact};
-use demsweep::kernel::law::{self, Dissipation, Extra, With};
-use demsweep::kernel::{Threading, bonds4, forces, geometry, mixed4};
+use demsweep::kernel::contacts::{Bond, Contact, ContactForce};
+use demsweep::kernel::lanes::{self, Lanes, Task, Width};
+use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, With};
+use demsweep::kernel::{Threading, forces, geometry, groups};
+
+/// Four bonds through `groups::bonds` on some lanes.
+struct Bonds<'a> {
+    pos: &'a [[f64; 3]],
+    vel: &'a [[f64; 3]],
+    cs: &'a [Contact; groups::LANES],
+    k: &'a ContactClass,
+    dt_s: f64,
+}
+
+impl Task for Bonds<'_> {
+    type Output = Option<groups::Group>;
+    #[inline(always)]
+    fn run<L: Lanes>(self) -> Self::Output {
+        groups::bonds(&geometry::of_four::<L>(self.pos, self.cs), self.vel, self.cs, self.k, self.dt_s)
+    }
+}
+
+/// Four contacts through `groups::mixed` (parts [`Friction`]) on some lanes.
+struct Mixed<'a> {
+    pos: &'a [[f64; 3]],
+    vel: &'a [[f64; 3]],
+    cs: &'a mut [Contact; groups::LANES],
+    k: &'a ContactClass,
+    dt_s: f64,
+    d: &'a mut Dissipation,
+}
+
+impl Task for Mixed<'_> {
+    type Output = Option<[ContactForce; groups::LANES]>;
+    #[inline(always)]
+    fn run<L: Lanes>(self) -> Self::Output {
+        groups::mixed::<L, Friction>(&geometry::of_four::<L>(self.pos, self.cs), self.vel, self.cs, self.k, self.dt_s, self.d)
+    }
+}
 
 /// No optional part. The lanes serve it and friction on (friction changes only frictional
 /// contacts, so a bond's law is this one either way).
@@ -13,10 +50,12 @@ type Plain = With<false, false, false, false>;
 
 #[test]
 fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
-    if !bonds4::available() {
-        eprintln!("this processor has no AVX: the four-lane path is never taken");
-        return;
+    for w in lanes::widths() {
+        four_elastic_bonds(w);
     }
+}
+
+fn four_elastic_bonds(width: Width) {
     let m = common::impact::model();
     let list: Vec<Contact> = m.state.contacts.list.clone();
     let k0 = &m.classes[list[0].class as usize];
@@ -36,14 +75,13 @@ fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
     }).collect();
     let dt_s = m.dt_s();
     let (mut taken, mut refused) = (0, 0);
-    for g in list.chunks_exact(bonds4::LANES) {
-        let cs: [Contact; bonds4::LANES] = g.try_into().unwrap();
-        if !bonds4::eligible(&cs) {
+    for g in list.chunks_exact(groups::LANES) {
+        let cs: [Contact; groups::LANES] = g.try_into().unwrap();
+        if !groups::eligible(&cs) {
             continue;
         }
         let k = &m.classes[cs[0].class as usize];
-        // SAFETY: the processor has AVX (checked above).
-        let got = unsafe { bonds4::elastic(&geometry::four(&pos, &cs), &vel, &cs, k, dt_s) };
+        let got = lanes::run_as(width, Bonds { pos: &pos, vel: &vel, cs: &cs, k, dt_s });
         let mut d = Dissipation::default();
         let scalar: Vec<_> = cs.iter().map(|c| {
             let mut c = *c;
@@ -60,7 +98,7 @@ fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
                     assert_eq!(
                         [lane.fx, lane.fy, lane.ti, lane.tj, group.ut_m[l]].map(f64::to_bits),
                         [f.fx, f.fy, f.ti, f.tj, c.ut_m].map(f64::to_bits),
-                        "lane {l} of {cs:?}"
+                        "lane {l} of {cs:?} ({width:?})"
                     );
                 }
                 taken += 1;
@@ -71,17 +109,19 @@ fn four_elastic_bonds_at_once_are_four_scalar_calls_bit_for_bit() {
             }
         }
     }
-    eprintln!("{taken} groups taken, {refused} refused");
+    eprintln!("{width:?}: {taken} groups taken, {refused} refused");
     assert!(taken > 100 && refused > 100, "both outcomes must occur: {taken} taken, {refused} refused");
 }
 
-/// Bits of the small impact after `steps` steps, with or without the four-lane path, on one
-/// thread (the scatter) or on a pool of two (the scatter in pieces, `kernel::pieces`).
-fn impact_bits(four_lanes: bool, threads: usize, steps: u64) -> (Vec<u64>, u64, f64) {
+/// Bits of the small impact after `steps` steps, with the four-lane paths on lanes `width` or
+/// without them (None), on one thread (the scatter) or on a pool of two (the scatter in pieces,
+/// `kernel::pieces`).
+fn impact_bits(width: Option<Width>, threads: usize, steps: u64) -> (Vec<u64>, u64, f64) {
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     pool.install(|| {
         let mut m = common::impact::model();
-        m.four_lanes = four_lanes;
+        m.four_lanes = width.is_some();
+        m.lane_width = width.unwrap_or(Width::Portable);
         if threads == 1 {
             m.threading = Threading::Serial;
         }
@@ -93,12 +133,14 @@ fn impact_bits(four_lanes: bool, threads: usize, steps: u64) -> (Vec<u64>, u64, 
 #[test]
 fn a_run_with_four_bonds_at_once_is_bitwise_the_run_one_at_a_time() {
     let steps = 1500;
-    let (scalar, broken, plastic_j) = impact_bits(false, 1, steps);
+    let (scalar, broken, plastic_j) = impact_bits(None, 1, steps);
     assert!(broken > 100 && plastic_j > 0.0, "bonds must yield and break: {broken} broken, {plastic_j} J plastic work");
-    for threads in [1, 2] {
-        assert!(impact_bits(true, threads, steps).0 == scalar, "four lanes on {threads} thread(s) differ from one bond at a time");
+    for w in lanes::widths() {
+        for threads in [1, 2] {
+            assert!(impact_bits(Some(w), threads, steps).0 == scalar, "four {w:?} lanes on {threads} thread(s) differ from one bond at a time");
+        }
     }
-    assert!(impact_bits(false, 2, steps).0 == scalar, "the pool one bond at a time differs from one thread");
+    assert!(impact_bits(None, 2, steps).0 == scalar, "the pool one bond at a time differs from one thread");
 }
 
 /// Friction on, no other optional part: the parts of the small impact, whose cracked target
@@ -106,7 +148,7 @@ fn a_run_with_four_bonds_at_once_is_bitwise_the_run_one_at_a_time() {
 type Friction = With<true, false, false, false>;
 
 /// One contact through the scalar law, as the contact loop takes it.
-fn scalar_one(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &mut Contact, k: &law::ContactClass, dt_s: f64, d: &mut Dissipation) -> demsweep::kernel::contacts::ContactForce {
+fn scalar_one(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &mut Contact, k: &law::ContactClass, dt_s: f64, d: &mut Dissipation) -> ContactForce {
     match forces::kinematics(pos, vel, c, k) {
         Ok(g) if c.bond == Bond::Intact => law::bonded::<Friction>(c, &mut Extra::new(0.0), k, &g, dt_s, d),
         Ok(g) => law::friction::touching::<Friction>(c, k, &g, dt_s, d),
@@ -119,10 +161,12 @@ fn scalar_one(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &mut Contact, k: &law::Cont
 
 #[test]
 fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
-    if !bonds4::available() {
-        eprintln!("this processor has no AVX: the four-lane path is never taken");
-        return;
+    for w in lanes::widths() {
+        four_mixed_contacts(w);
     }
+}
+
+fn four_mixed_contacts(width: Width) {
     let mut m = common::impact::model();
     assert_eq!(m.parts, law::Parts { friction: true, ..Default::default() });
     // Mid-impact: the target cracked, bonds and frictional pairs mixed along the list.
@@ -148,8 +192,8 @@ fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
             _ => {}
         }
     }
-    let Groups { taken, refused, mixed, sliding, forgetting, .. } = groups_against_scalar(&m, &pos, &vel);
-    eprintln!("{taken} groups taken ({mixed} of bonds and frictional pairs; {sliding} sliding and {forgetting} forgetting pairs), {refused} refused");
+    let Groups { taken, refused, mixed, sliding, forgetting, .. } = groups_against_scalar(&m, &pos, &vel, width);
+    eprintln!("{width:?}: {taken} groups taken ({mixed} of bonds and frictional pairs; {sliding} sliding and {forgetting} forgetting pairs), {refused} refused");
     assert!(taken > 100 && mixed > 20 && sliding > 5 && forgetting > 5, "every kind must occur: {taken} taken, {mixed} mixed, {sliding} sliding, {forgetting} forgetting");
     // The frictional pairs with nothing to forget and the target stretched by 1.5 %: groups of
     // four pairs apart with nothing to forget, which the lanes take without their laws, beside
@@ -158,7 +202,7 @@ fn four_mixed_contacts_at_once_are_four_scalar_calls_bit_for_bit() {
         (c.ut_m, c.rest_m) = (0.0, m.classes[c.class as usize].radius_sum_m);
     }
     let stretched: Vec<[f64; 3]> = m.state.pos.iter().map(|p| [1.015 * p[0], 1.015 * p[1], p[2]]).collect();
-    let Groups { taken, refused, nothing, .. } = groups_against_scalar(&m, &stretched, &m.state.vel);
+    let Groups { taken, refused, nothing, .. } = groups_against_scalar(&m, &stretched, &m.state.vel, width);
     eprintln!("stretched: {taken} groups taken, {nothing} of them four pairs apart with nothing to forget, {refused} refused");
     assert!(nothing > 10 && taken > nothing, "{nothing} groups of four pairs apart with nothing to forget, of {taken}");
 }
@@ -177,23 +221,22 @@ struct Groups {
 /// Every group of one class of `m`'s list through the mixed lanes at `pos`, `vel`, against
 /// four scalar calls (forces, history and the friction booked, bit for bit; a refused group
 /// changes nothing), counting the kinds met.
-fn groups_against_scalar(m: &demsweep::kernel::Model, pos: &[[f64; 3]], vel: &[[f64; 3]]) -> Groups {
+fn groups_against_scalar(m: &demsweep::kernel::Model, pos: &[[f64; 3]], vel: &[[f64; 3]], width: Width) -> Groups {
     let dt_s = m.dt_s();
     let mut n = Groups::default();
     let Groups { taken, refused, mixed, sliding, forgetting, nothing } = &mut n;
-    for g in m.state.contacts.list.chunks_exact(bonds4::LANES) {
-        let cs: [Contact; bonds4::LANES] = g.try_into().unwrap();
-        if !mixed4::one_class(&cs) {
+    for g in m.state.contacts.list.chunks_exact(groups::LANES) {
+        let cs: [Contact; groups::LANES] = g.try_into().unwrap();
+        if !groups::one_class(&cs) {
             continue;
         }
         let k = &m.classes[cs[0].class as usize];
         // The ledger is not at zero: the lanes add to a running sum as the loop does.
         let d0 = Dissipation { friction_j: 0.125, ..Default::default() };
-        let (mut lanes, mut d_lanes) = (cs, d0);
-        // SAFETY: the processor has AVX (checked above).
-        let got = unsafe { mixed4::evaluate::<Friction>(&geometry::four(pos, &cs), vel, &mut lanes, k, dt_s, &mut d_lanes) };
+        let (mut lane_cs, mut d_lanes) = (cs, d0);
+        let got = lanes::run_as(width, Mixed { pos, vel, cs: &mut lane_cs, k, dt_s, d: &mut d_lanes });
         let (mut scalar, mut d) = (cs, d0);
-        let mut lane_w = [0.0; bonds4::LANES];
+        let mut lane_w = [0.0; groups::LANES];
         let forces: Vec<_> = scalar.iter_mut().enumerate().map(|(l, c)| {
             let before = d.friction_j;
             let f = scalar_one(pos, vel, c, k, dt_s, &mut d);
@@ -204,15 +247,15 @@ fn groups_against_scalar(m: &demsweep::kernel::Model, pos: &[[f64; 3]], vel: &[[
         match got {
             Some(f) => {
                 assert!(elastic, "the mixed lanes took a group whose bonds the scalar law did not keep elastic: {cs:?}");
-                for l in 0..bonds4::LANES {
+                for l in 0..groups::LANES {
                     let (a, b) = (&f[l], &forces[l]);
                     assert_eq!([a.fx, a.fy, a.ti, a.tj].map(f64::to_bits), [b.fx, b.fy, b.ti, b.tj].map(f64::to_bits), "force, lane {l} of {cs:?}");
                 }
-                assert_eq!(lanes, scalar, "history of {cs:?}");
-                assert_eq!(lanes.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]), scalar.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]));
+                assert_eq!(lane_cs, scalar, "history of {cs:?}");
+                assert_eq!(lane_cs.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]), scalar.map(|c| [c.ut_m.to_bits(), c.rest_m.to_bits()]));
                 assert_eq!(d_lanes.friction_j.to_bits(), d.friction_j.to_bits(), "friction booked for {cs:?}");
                 let kinds = cs.iter().filter(|c| c.bond == Bond::Intact).count();
-                *mixed += (kinds > 0 && kinds < bonds4::LANES) as usize;
+                *mixed += (kinds > 0 && kinds < groups::LANES) as usize;
                 let mut idle = 0;
                 for (l, c) in cs.iter().enumerate() {
                     let apart = forces::kinematics(pos, vel, c, k).is_err();
@@ -220,12 +263,12 @@ fn groups_against_scalar(m: &demsweep::kernel::Model, pos: &[[f64; 3]], vel: &[[
                     *forgetting += (apart && (c.ut_m != 0.0 || c.rest_m != k.radius_sum_m)) as usize;
                     idle += (apart && c.ut_m == 0.0 && c.rest_m == k.radius_sum_m) as usize;
                 }
-                *nothing += (idle == bonds4::LANES) as usize;
+                *nothing += (idle == groups::LANES) as usize;
                 *taken += 1;
             }
             None => {
                 assert!(!elastic, "the mixed lanes refused a group whose bonds the scalar law kept elastic: {cs:?}");
-                assert_eq!((lanes, d_lanes.friction_j.to_bits()), (cs, d0.friction_j.to_bits()), "a refused group must change nothing");
+                assert_eq!((lane_cs, d_lanes.friction_j.to_bits()), (cs, d0.friction_j.to_bits()), "a refused group must change nothing");
                 *refused += 1;
             }
         }

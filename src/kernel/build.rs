@@ -363,6 +363,7 @@ impl ModelBuilder {
             record_contact_forces: false,
             scatter_piece_contacts: super::pieces::PIECE,
             four_lanes: true,
+            lane_width: super::lanes::widest(),
             rate_field,
             state,
             scratch: Default::default(),

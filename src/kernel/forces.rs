@@ -9,17 +9,21 @@
 //! order (`pieces`): the sums are bitwise the same for any thread count.
 //!
 //! The loop is compiled once per set of optional law parts (`law::PartSet`). Where the part
-//! set allows it and the processor has AVX, the contacts go four at a time, with the same bits:
-//! runs of four intact bonds through the bond law's elastic branch ([`bonds4`]), any other four
-//! of one class through every kind's law at once ([`mixed4`]); what neither takes (a bond
-//! leaving the elastic branch, classes mixed) one at a time.
+//! set allows it, the contacts go four at a time in lanes (`lanes`: AVX where the processor has
+//! it), with the same bits: runs of four intact bonds through the bond law's elastic branch
+//! ([`groups::bonds`]), any other four of one class through every kind's law at once
+//! ([`groups::mixed`]); what neither takes (a bond leaving the elastic branch, classes mixed)
+//! one at a time.
 
 use std::ops::Range;
 
 use rayon::prelude::*;
 
+use std::marker::PhantomData;
+
 use super::geometry::{self, Geometry, Separation, separation};
-use super::{bonds4, mixed4, pieces, spans};
+use super::lanes::{self, Lanes};
+use super::{groups, pieces, spans};
 use super::contacts::{Bond, Contact, ContactForce};
 use super::law::rate_field::RateField;
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
@@ -49,9 +53,10 @@ pub struct Stage<'a> {
     pub out: Out<'a>,
     /// Store each contact's force in `force` (always done with [`Out::Stored`]).
     pub record: bool,
-    /// Take the contacts four at a time where the parts and the processor allow ([`bonds4`],
-    /// [`mixed4`]).
+    /// Take the contacts four at a time where the parts allow ([`groups`]).
     pub four_lanes: bool,
+    /// The lanes they go on.
+    pub lane_width: lanes::Width,
     /// The rate part's smoothed velocities per element, m/s (`law::rate_field`; empty: none).
     pub rate_vel: &'a [[f64; 2]],
 }
@@ -70,11 +75,10 @@ impl law::PartsVisitor for Stage<'_> {
     type Output = ();
     #[inline(never)]
     fn visit<P: PartSet>(self) {
-        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes, rate_vel } = self;
-        let at = &StepInput { pos, vel, dt_s, classes, rate_vel };
+        let Stage { pos, vel, list, extra, force, classes, dt_s, partial, out, record, four_lanes, lane_width, rate_vel } = self;
+        let at = &StepInput { pos, vel, dt_s, classes, rate_vel, width: lane_width };
         let four = four_lanes && lanes_apply::<P>();
         match out {
-            // `four` only where `lanes_apply` found AVX.
             Out::Stored if four => parallel::<P, true>(at, list, extra, force, partial),
             Out::Stored => parallel::<P, false>(at, list, extra, force, partial),
             // The loops compiled with and without the per-contact store: no branch per contact
@@ -82,14 +86,10 @@ impl law::PartsVisitor for Stage<'_> {
             Out::Serial(sums) => {
                 let sums = Serial::new(sums);
                 match (record, four) {
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: `lanes_apply` checked that the processor has AVX.
-                    (true, true) => unsafe { scatter_avx::<P, true, _>(at, list, extra, force, partial, sums) },
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: as above.
-                    (false, true) => unsafe { scatter_avx::<P, false, _>(at, list, extra, force, partial, sums) },
-                    (true, _) => scatter_alone::<P, true, _>(at, list, extra, force, partial, sums),
-                    (false, _) => scatter_alone::<P, false, _>(at, list, extra, force, partial, sums),
+                    (true, true) => lanes::run_as(at.width, ScatterFour::<P, true, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
+                    (false, true) => lanes::run_as(at.width, ScatterFour::<P, false, _> { at, list, extra, force, partial, out: sums, parts: PhantomData }),
+                    (true, false) => scatter_alone::<P, true, _>(at, list, extra, force, partial, sums),
+                    (false, false) => scatter_alone::<P, false, _>(at, list, extra, force, partial, sums),
                 }
             }
             Out::Pieces(pieces) => match (record, four) {
@@ -102,12 +102,11 @@ impl law::PartsVisitor for Stage<'_> {
     }
 }
 
-/// True when the part set's laws can take four contacts at once — no part that reads the normal
-/// velocity or keeps an extra slot (friction may be on: [`mixed4`] carries it) — and the
-/// processor can.
+/// True when the part set's laws can take four contacts at once: no part that reads the normal
+/// velocity or keeps an extra slot (friction may be on: [`groups::mixed`] carries it).
 #[inline(always)]
 fn lanes_apply<P: PartSet>() -> bool {
-    !P::RATE && !P::COMPACTION && !P::DAMPING && bonds4::available()
+    !P::RATE && !P::COMPACTION && !P::DAMPING
 }
 
 /// What every contact of a step reads: the state it starts from, the step and the classes.
@@ -123,6 +122,8 @@ struct StepInput<'a> {
     /// The rate part's smoothed velocities [vx, vy], m/s, per element (`law::rate_field`);
     /// empty: each bond's rate reads its own pair's velocity.
     rate_vel: &'a [[f64; 2]],
+    /// The lanes of the groups of four.
+    width: lanes::Width,
 }
 
 /// Several threads: each contact's force into `force`, chunk by chunk.
@@ -130,12 +131,10 @@ struct StepInput<'a> {
 fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contact], extra: &mut [Extra], force: &mut [ContactForce], partial: &mut [Dissipation]) {
     let run = |((cs, fs), d): ((&mut [Contact], &mut [ContactForce]), &mut Dissipation), xs: &mut [Extra]| {
         *d = Dissipation::default();
-        #[cfg(target_arch = "x86_64")]
         if FOUR {
-            // SAFETY: FOUR is set only when the processor has AVX.
-            return unsafe { chunk_avx::<P>(at, cs, xs, fs, d) };
+            return lanes::run_as(at.width, ChunkFour::<P> { at, cs, xs, fs, d, parts: PhantomData });
         }
-        each::<P, false>(at, cs, xs, d, |k, _, f| fs[k] = *f);
+        each::<P, lanes::Portable, false>(at, cs, xs, d, |k, _, f| fs[k] = *f);
     };
     let chunks = list.par_chunks_mut(CHUNK).zip(force.par_chunks_mut(CHUNK)).zip(partial.par_iter_mut());
     if P::EXTRA {
@@ -145,16 +144,25 @@ fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contac
     }
 }
 
-/// One chunk of [`parallel`] compiled for AVX, with the groups of four. (A function of its
-/// own: the closures of `parallel` are compiled without AVX, in which the lanes' intrinsics
-/// would be calls — 0.27× the one-thread speed on two threads, as first built.)
-///
-/// # Safety
-/// The processor must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn chunk_avx<P: PartSet>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], fs: &mut [ContactForce], d: &mut Dissipation) {
-    each::<P, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
+/// One chunk of [`parallel`] on lanes, with the groups of four. (A task of its own: the
+/// closures of `parallel` are compiled without AVX, in which the lanes' intrinsics would be
+/// calls — 0.27× the one-thread speed on two threads, as first built.)
+struct ChunkFour<'a, 'b, P> {
+    at: &'b StepInput<'a>,
+    cs: &'b mut [Contact],
+    xs: &'b mut [Extra],
+    fs: &'b mut [ContactForce],
+    d: &'b mut Dissipation,
+    parts: PhantomData<P>,
+}
+
+impl<P: PartSet> lanes::Task for ChunkFour<'_, '_, P> {
+    type Output = ();
+    #[inline(always)]
+    fn run<L: Lanes>(self) {
+        let ChunkFour { at, cs, xs, fs, d, .. } = self;
+        each::<P, L, true>(at, cs, xs, d, |k, _, f| fs[k] = *f);
+    }
 }
 
 /// The scatter on the pool ([`Out::Pieces`]): the list cut into pieces in spans, one per thread
@@ -201,10 +209,8 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
         .collect();
     spans::run(jobs, starts, |((((cs, fs), ds), xs), ((rs, s), r))| {
         let out = pieces::PieceSums::new(s, r.start, rs, n_elements);
-        #[cfg(target_arch = "x86_64")]
         if FOUR {
-            // SAFETY: FOUR is set only when the processor has AVX.
-            return unsafe { scatter_avx::<P, RECORD, _>(at, cs, xs, fs, ds, out) };
+            return lanes::run_as(at.width, ScatterFour::<P, RECORD, _> { at, list: cs, extra: xs, force: fs, partial: ds, out, parts: PhantomData });
         }
         scatter_alone::<P, RECORD, _>(at, cs, xs, fs, ds, out);
     });
@@ -213,7 +219,7 @@ fn parallel_scatter<P: PartSet, const RECORD: bool, const FOUR: bool>(
 /// Each contact's force added to its two elements by `out` as it goes (and stored in `force`
 /// when `RECORD`), chunk by chunk.
 #[inline(always)]
-fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
+fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, L: Lanes, S: Sums>(
     at: &StepInput<'_>,
     list: &mut [Contact],
     extra: &mut [Extra],
@@ -228,14 +234,14 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
         // the scalar loop, which the copy made 1.25× slower (as it did the velocities cut to
         // the positions' length in `each`), although it took fewer instructions.
         let mut local = out;
-        return scatter_into::<P, RECORD, FOUR, S>(at, list, extra, force, partial, &mut local);
+        return scatter_into::<P, RECORD, FOUR, L, S>(at, list, extra, force, partial, &mut local);
     }
-    scatter_into::<P, RECORD, FOUR, S>(at, list, extra, force, partial, &mut out)
+    scatter_into::<P, RECORD, FOUR, L, S>(at, list, extra, force, partial, &mut out)
 }
 
 /// [`scatter`]'s loop, adding through `out`.
 #[inline(always)]
-fn scatter_into<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
+fn scatter_into<P: PartSet, const RECORD: bool, const FOUR: bool, L: Lanes, S: Sums>(
     at: &StepInput<'_>,
     list: &mut [Contact],
     extra: &mut [Extra],
@@ -248,7 +254,7 @@ fn scatter_into<P: PartSet, const RECORD: bool, const FOUR: bool, S: Sums>(
         let (from, to) = (c * CHUNK, ((c + 1) * CHUNK).min(n));
         let xs = if P::EXTRA { &mut extra[from..to] } else { &mut [] };
         *d = Dissipation::default();
-        each::<P, FOUR>(at, &mut list[from..to], xs, d, |k, c, f| {
+        each::<P, L, FOUR>(at, &mut list[from..to], xs, d, |k, c, f| {
             if RECORD {
                 force[from + k] = *f;
             }
@@ -271,24 +277,27 @@ fn scatter_alone<P: PartSet, const RECORD: bool, S: Sums>(
     partial: &mut [Dissipation],
     out: S,
 ) {
-    scatter::<P, RECORD, false, S>(at, list, extra, force, partial, out)
+    scatter::<P, RECORD, false, lanes::Portable, S>(at, list, extra, force, partial, out)
 }
 
-/// [`scatter`] compiled for AVX, with the groups of four.
-///
-/// # Safety
-/// The processor must have AVX.
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx")]
-unsafe fn scatter_avx<P: PartSet, const RECORD: bool, S: Sums>(
-    at: &StepInput<'_>,
-    list: &mut [Contact],
-    extra: &mut [Extra],
-    force: &mut [ContactForce],
-    partial: &mut [Dissipation],
+/// [`scatter`] on lanes, with the groups of four.
+struct ScatterFour<'a, 'b, P, const RECORD: bool, S> {
+    at: &'b StepInput<'a>,
+    list: &'b mut [Contact],
+    extra: &'b mut [Extra],
+    force: &'b mut [ContactForce],
+    partial: &'b mut [Dissipation],
     out: S,
-) {
-    scatter::<P, RECORD, true, S>(at, list, extra, force, partial, out)
+    parts: PhantomData<P>,
+}
+
+impl<P: PartSet, const RECORD: bool, S: Sums> lanes::Task for ScatterFour<'_, '_, P, RECORD, S> {
+    type Output = ();
+    #[inline(always)]
+    fn run<L: Lanes>(self) {
+        let ScatterFour { at, list, extra, force, partial, out, .. } = self;
+        scatter::<P, RECORD, true, L, S>(at, list, extra, force, partial, out)
+    }
 }
 
 /// Where a scatter adds each contact's force: (fx, fy, ti) to element i, (−fx, −fy, tj) to j,
@@ -344,11 +353,12 @@ impl Sums for Serial<'_> {
 
 /// Every contact of `cs` (extra slots `xs`, empty unless the parts keep them) evaluated, its
 /// dissipation added to `d`, and `sink(index in cs, contact, force)` called in contact order.
-/// With `FOUR` (only in a function compiled for AVX), whole groups of four go through
-/// [`bonds4::elastic`] when they are intact bonds of one class, else through
-/// [`mixed4::evaluate`] when they are of one class, one by one when neither takes them.
+/// With `FOUR` (in a [`lanes::Task`]), whole groups of four go on lanes `L` through
+/// [`groups::bonds`] when they are intact bonds of one class, else through [`groups::mixed`]
+/// when they are of one class, one by one when neither takes them (without `FOUR`, `L` is not
+/// used).
 #[inline(always)]
-fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
+fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
     // The velocities cut to the positions' length, so that the compiler can drop checks of a
     // row against both (by cachegrind on the benchmark block: 10.5 instructions fewer per
     // contact-step when each group made its own geometry, 1.9 since the geometry is made eight
@@ -357,9 +367,8 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
     let at = &cut;
     let mut scratch = Extra::new(0.0);
     let mut from = 0;
-    #[cfg(target_arch = "x86_64")]
     if FOUR {
-        const L: usize = bonds4::LANES;
+        const N: usize = groups::LANES;
         // The geometry of the next eight groups first, then their laws: each group's root and
         // division start a long dependent chain (normal, shear spring, elastic test, forces)
         // that the processor's reorder window could not hide behind the ~350 instructions of
@@ -368,25 +377,24 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
         // the positions'), less time: the peers' beam 0.85–0.91× (six alternating pairs), 16
         // at a time the same.
         const AHEAD: usize = 8;
-        // SAFETY (here and below): FOUR is set only by functions compiled for AVX, called
-        // only when the processor has it.
-        let mut geos = [unsafe { geometry::four_zero() }; AHEAD];
+        let zero = L::zero();
+        let mut geos = [Geometry { d2_m2: zero, d_m: zero, nx: zero, ny: zero }; AHEAD];
         let mut ahead = 0;
         let mut next = 0;
-        while from + L <= cs.len() {
+        while from + N <= cs.len() {
             if next == ahead {
-                ahead = ((cs.len() - from) / L).min(AHEAD);
+                ahead = ((cs.len() - from) / N).min(AHEAD);
                 for (g, geo) in geos.iter_mut().enumerate().take(ahead) {
-                    *geo = unsafe { geometry::four(at.pos, (&cs[from + g * L..from + (g + 1) * L]).try_into().unwrap()) };
+                    *geo = geometry::of_four(at.pos, (&cs[from + g * N..from + (g + 1) * N]).try_into().unwrap());
                 }
                 next = 0;
             }
             let geo = &geos[next];
             next += 1;
-            let group: &mut [Contact; L] = (&mut cs[from..from + L]).try_into().unwrap();
+            let group: &mut [Contact; N] = (&mut cs[from..from + N]).try_into().unwrap();
             let k = &at.classes[group[0].class as usize];
-            let done = if bonds4::eligible(group) {
-                match unsafe { bonds4::elastic(geo, at.vel, group, k, at.dt_s) } {
+            let done = if groups::eligible(group) {
+                match groups::bonds(geo, at.vel, group, k, at.dt_s) {
                     Some(g) => {
                         for (l, c) in group.iter_mut().enumerate() {
                             c.ut_m = g.ut_m[l];
@@ -398,8 +406,8 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
                     }
                     None => false,
                 }
-            } else if mixed4::one_class(group) {
-                match unsafe { mixed4::evaluate::<P>(geo, at.vel, group, k, at.dt_s, d) } {
+            } else if groups::one_class(group) {
+                match groups::mixed::<L, P>(geo, at.vel, group, k, at.dt_s, d) {
                     Some(f) => {
                         for (l, c) in group.iter().enumerate() {
                             sink(from + l, c, &f[l]);
@@ -418,7 +426,7 @@ fn each<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs
                     sink(from + l, c, &f);
                 }
             }
-            from += L;
+            from += N;
         }
     }
     if !(P::RATE || P::DAMPING) {
@@ -481,7 +489,7 @@ fn first_half<P: PartSet>(at: &StepInput<'_>, c: &Contact, x: &mut Extra) -> Ahe
         let g = along(at.vel, c, k, geometry::of(s));
         let vn_rate = if P::RATE { RateField::normal_velocity_mps(at.rate_vel, c.i, c.j, g.nx, g.ny, g.vn_mps) } else { g.vn_mps };
         Ahead::Bond(g, law::bond_ratios::<P>(x, k, vn_rate))
-    } else if apart_with_nothing_to_forget(c, k, s.d2_m2) {
+    } else if law::friction::idle(c.ut_m, c.rest_m, k.radius_sum_m, s.d2_m2) {
         Ahead::Nothing
     } else {
         Ahead::Frictional(s)
@@ -506,26 +514,11 @@ fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, d: &mut D
     second_half::<P>(at, c, x, a, d)
 }
 
-/// A frictional pair that is apart with no shear spring and its rest length back at r_i + r_j:
-/// `law::friction::apart` would change nothing. Most contacts of a fractured body are such;
-/// checked here, in line, they skip the call.
-#[inline(always)]
-fn apart_with_nothing_to_forget(c: &Contact, k: &ContactClass, d2_m2: f64) -> bool {
-    c.ut_m == 0.0 && c.rest_m == k.radius_sum_m && apart(c, d2_m2)
-}
-
-/// A frictional pair at squared distance `d2_m2` that does not touch: its centres at least its
-/// rest length apart.
-#[inline(always)]
-fn apart(c: &Contact, d2_m2: f64) -> bool {
-    d2_m2 >= c.rest_m * c.rest_m
-}
-
 /// A frictional contact, out of line: inlined beside the bond law it made the all-bonded loop
 /// 2.2× slower (the benchmark block: 25 → 11.5 ns per contact for the contact stage).
 #[inline(never)]
 fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass, s: Separation, d: &mut Dissipation) -> ContactForce {
-    if apart(c, s.d2_m2) {
+    if law::friction::is_apart(s.d2_m2, c.rest_m) {
         law::friction::apart(c, k, s.d2_m2, d);
         ContactForce::default()
     } else {
@@ -538,7 +531,7 @@ fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass,
 #[inline(always)]
 pub fn kinematics(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactClass) -> Result<Kinematics, f64> {
     let s = separation(pos, c);
-    if c.bond == Bond::Frictional && apart(c, s.d2_m2) {
+    if c.bond == Bond::Frictional && law::friction::is_apart(s.d2_m2, c.rest_m) {
         return Err(s.d2_m2);
     }
     Ok(along(vel, c, k, geometry::of(s)))
@@ -547,10 +540,6 @@ pub fn kinematics(pos: &[[f64; 3]], vel: &[[f64; 3]], c: &Contact, k: &ContactCl
 /// Relative velocity of a pair of geometry `g`.
 #[inline(always)]
 fn along(vel: &[[f64; 3]], c: &Contact, k: &ContactClass, g: Geometry) -> Kinematics {
-    let (i, j) = (c.i as usize, c.j as usize);
-    let (vi, vj) = (vel[i], vel[j]);
-    let (dvx, dvy) = (vj[0] - vi[0], vj[1] - vi[1]);
-    let (nx, ny, dist) = (g.nx, g.ny, g.d_m);
-    let (li, lj) = (dist * k.lever_i, dist * k.lever_j);
-    Kinematics { d_m: dist, nx, ny, vn_mps: dvx * nx + dvy * ny, vt_mps: -dvx * ny + dvy * nx - li * vi[2] - lj * vj[2], li_m: li, lj_m: lj }
+    let (vi, vj) = (vel[c.i as usize], vel[c.j as usize]);
+    geometry::relative(&g, vj[0] - vi[0], vj[1] - vi[1], vi[2], vj[2], k.lever_i, k.lever_j)
 }

@@ -11,6 +11,7 @@
 //! since the last neighbour rebuild.
 
 use super::contacts::Contacts;
+use super::lanes::{self, Lanes, Mask, Real};
 use super::state::Elements;
 
 /// Elements per chunk (fixed, for deterministic partial sums).
@@ -185,6 +186,8 @@ pub struct Motion<'a> {
     /// On the pool, in spans of chunks, one per thread (`spans`): the chunk each span starts
     /// at, from 0, then the number of chunks. None: on this thread.
     pub spans: Option<&'a [usize]>,
+    /// The lanes the free elements go on, four at a time.
+    pub lane_width: lanes::Width,
 }
 
 /// Advance every element by one step. `parts.frame`: the mass-proportional damping acts on the
@@ -201,13 +204,41 @@ pub fn advance(parts: MotionParts, m: Motion<'_>) {
     arms!(false false false, false false true, false true false, false true true, true false false, true false true, true true false, true true true)
 }
 
-/// |v|² + (|ω| r)² above `limit2` (m²/s²), or not finite (NaN fails every comparison: the
-/// negated `<=` catches it).
+/// The central-difference update of a velocity component, v(n+½) = c1·v(n−½) + c2·F·(1/m) +
+/// c3·v_r (`c3_vr`, m/s), left to right: written once for the general loop (damped or not:
+/// undamped, c1 = 1, c2 = Δt, c3·v_r = +0, so the bits are those of the damped form with
+/// α = 0) and the free elements, one at a time or in lanes.
 #[inline(always)]
-#[allow(clippy::neg_cmp_op_on_partial_ord)]
-fn too_fast(v: [f64; 3], radius_m: f64, limit2: f64) -> bool {
-    let spin = v[2].abs() * radius_m;
-    !(v[0] * v[0] + v[1] * v[1] + spin * spin <= limit2)
+fn velocity<R: Real>(c1: R, v: R, c2: R, f: R, inv_m: R, c3_vr: R) -> R {
+    c1 * v + c2 * f * inv_m + c3_vr
+}
+
+/// x(n+1) = x(n) + Δt·v(n+½).
+#[inline(always)]
+fn position<R: Real>(x: R, dt: R, v: R) -> R {
+    x + dt * v
+}
+
+/// |v|² + (|ω| r)² above `limit2` (m²/s²), or not finite (NaN fails every comparison: the
+/// negated `<=` catches it); velocity (vx, vy) m/s, spin `w` rad/s, radius m.
+#[inline(always)]
+fn too_fast<R: Real>(vx: R, vy: R, w: R, radius_m: R, limit2: R) -> R::Mask {
+    let spin = w.abs() * radius_m;
+    !(vx * vx + vy * vy + spin * spin).le(limit2)
+}
+
+/// An element at (x, y) m further than `margin_m` from where it was at the last neighbour
+/// update, (rx, ry) m.
+#[inline(always)]
+fn drifted<R: Real>(x: R, y: R, rx: R, ry: R, margin_m: R) -> R::Mask {
+    let (dx, dy) = (x - rx, y - ry);
+    (dx * dx + dy * dy).gt(margin_m * margin_m)
+}
+
+/// [`too_fast`] of one element's velocity row.
+#[inline(always)]
+fn row_too_fast(v: [f64; 3], radius_m: f64, limit2: f64) -> bool {
+    too_fast(v[0], v[1], v[2], radius_m, limit2)
 }
 
 /// A run of free elements with no damping or external force, for [`Free::advance`].
@@ -235,145 +266,82 @@ struct Free<'a> {
 }
 
 impl Free<'_> {
-    /// The update ([`free_undamped`]), then its checks: (some element too fast, some drifted
-    /// past its margin). Compiled for AVX where the processor has it: the same operations, four
-    /// components to an instruction instead of two.
-    fn advance(self) -> (bool, bool) {
-        #[cfg(target_arch = "x86_64")]
-        if super::bonds4::available() {
-            // SAFETY: the processor has AVX.
-            return unsafe { self.advance_avx() };
-        }
-        self.advance_here()
+    /// The update, then its checks: (some element too fast, some drifted past its margin), four
+    /// elements at a time on lanes `width`.
+    fn advance(self, width: lanes::Width) -> (bool, bool) {
+        lanes::run_as(width, self)
     }
 
-    /// [`Free::advance`] four elements at a time in AVX lanes, the update and its checks in
-    /// one pass: each group's twelve components are updated as the flat loop updates them, and
-    /// the checks read the new velocities and positions from the registers, put into lanes by
-    /// shuffles ([`columns`]), instead of a second pass over the rows one element at a time
-    /// (that pass was a twelfth of the time of the all-bonded block with 13 145 elements: the
-    /// block without it ran 0.915× as long; in one pass, the peers' beam on one thread took
-    /// 0.96× the time of the two, five alternating pairs). The same operations in the same
-    /// order per component and per element, so the same bits and the same answers (a NaN is
-    /// too fast, as in [`too_fast`]). The last elements (fewer than four) go through
-    /// [`Free::advance_here`].
-    ///
-    /// # Safety
-    /// The processor must have AVX.
-    #[cfg(target_arch = "x86_64")]
-    #[target_feature(enable = "avx")]
-    unsafe fn advance_avx(self) -> (bool, bool) {
-        use std::arch::x86_64::*;
+    /// [`Free::advance`] in groups of `R::LANES` elements, the update and its checks in one
+    /// pass: each group's components are updated as flat arrays (for four elements, twelve
+    /// components in three values), and the checks read the new velocities and positions from
+    /// the registers, put into lanes by `Real::columns`, instead of a second pass over the rows
+    /// one element at a time (that pass was a twelfth of the time of the all-bonded block with
+    /// 13 145 elements; in one pass, the peers' beam on one thread took 0.96× the time of the
+    /// two). The same operations in the same order per component and per element, so the same
+    /// bits and the same answers (a NaN is too fast). The last elements (fewer than a group) go
+    /// one at a time.
+    #[inline(always)]
+    fn advance_as<R: Real>(self) -> (bool, bool) {
         let Free { dt_s, inv_mass_3, sum, force, vel, pos, radius, refs, margin, limit2 } = self;
         let n = vel.len();
-        let whole = n - n % 4;
+        let whole = n - n % R::LANES;
         let (sum, sum_tail) = sum.split_at_mut(whole);
         let (force, force_tail) = force[..n].split_at_mut(whole);
         let (vel, vel_tail) = vel.split_at_mut(whole);
         let (pos, pos_tail) = pos[..n].split_at_mut(whole);
         let (inv, radius, refs, margin) = (&inv_mass_3[..n], &radius[..n], &refs[..n], &margin[..n]);
-        // SAFETY: AVX (the caller's contract); every load and store is of an array of four or
-        // twelve f64 that the iterators hand out.
-        let (bad, drifted) = unsafe {
-            let (dt, zero, sign) = (_mm256_set1_pd(dt_s), _mm256_setzero_pd(), _mm256_set1_pd(-0.0));
-            let (mut bad, mut drifted) = (zero, zero);
-            let groups = sum.chunks_exact_mut(4).zip(force.chunks_exact_mut(4)).zip(vel.chunks_exact_mut(4)).zip(pos.chunks_exact_mut(4));
-            let consts = inv.chunks_exact(4).zip(radius.chunks_exact(4)).zip(refs.chunks_exact(4)).zip(margin.chunks_exact(4));
-            for ((((s, f), v), x), (((im, r), g), m)) in groups.zip(consts) {
-                let (s, f, v, x) = (s.as_flattened_mut().as_mut_ptr(), f.as_flattened_mut().as_mut_ptr(), v.as_flattened_mut().as_mut_ptr(), x.as_flattened_mut().as_mut_ptr());
-                let im = im.as_flattened().as_ptr();
-                // Components 4k..4k + 4 of the group: as `free_undamped`, v += Δt·F/m (+ 0.0),
-                // x += Δt·v.
-                let load = |p: *const f64| [_mm256_loadu_pd(p), _mm256_loadu_pd(p.add(4)), _mm256_loadu_pd(p.add(8))];
-                let (fs, vs, xs, ims) = (load(s), load(v), load(x), load(im));
-                let vn: [__m256d; 3] = std::array::from_fn(|k| _mm256_add_pd(_mm256_add_pd(vs[k], _mm256_mul_pd(_mm256_mul_pd(dt, fs[k]), ims[k])), zero));
-                let xn: [__m256d; 3] = std::array::from_fn(|k| _mm256_add_pd(xs[k], _mm256_mul_pd(dt, vn[k])));
-                for k in 0..3 {
-                    _mm256_storeu_pd(s.add(4 * k), zero);
-                    _mm256_storeu_pd(f.add(4 * k), fs[k]);
-                    _mm256_storeu_pd(v.add(4 * k), vn[k]);
-                    _mm256_storeu_pd(x.add(4 * k), xn[k]);
-                }
-                // `too_fast`: !((vx² + vy²) + (|ω| r)² <= limit²).
-                let (vx, vy, w) = columns(vn[0], vn[1], vn[2]);
-                let spin = _mm256_mul_pd(_mm256_andnot_pd(sign, w), _mm256_loadu_pd(r.as_ptr()));
-                let speed2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(spin, spin));
-                bad = _mm256_or_pd(bad, _mm256_cmp_pd::<_CMP_NLE_UQ>(speed2, _mm256_set1_pd(limit2)));
-                // The drift: dx² + dy² > m², from the reference rows [x, y] put into lanes.
-                let (px, py, _) = columns(xn[0], xn[1], xn[2]);
-                let (g01, g23) = (_mm256_loadu_pd(g[0..2].as_flattened().as_ptr()), _mm256_loadu_pd(g[2..4].as_flattened().as_ptr()));
-                let (lo, hi) = (_mm256_permute2f128_pd::<0x20>(g01, g23), _mm256_permute2f128_pd::<0x31>(g01, g23));
-                let (dx, dy) = (_mm256_sub_pd(px, _mm256_unpacklo_pd(lo, hi)), _mm256_sub_pd(py, _mm256_unpackhi_pd(lo, hi)));
-                let mm = _mm256_loadu_pd(m.as_ptr());
-                let d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
-                drifted = _mm256_or_pd(drifted, _mm256_cmp_pd::<_CMP_GT_OQ>(d2, _mm256_mul_pd(mm, mm)));
+        let (dt, one, zero, limit2_r) = (R::splat(dt_s), R::splat(1.0), R::zero(), R::splat(limit2));
+        let (mut bad, mut far) = (zero.gt(zero), zero.gt(zero));
+        let w = 3 * R::LANES;
+        let groups = sum.as_flattened_mut().chunks_exact_mut(w).zip(force.as_flattened_mut().chunks_exact_mut(w)).zip(vel.as_flattened_mut().chunks_exact_mut(w)).zip(pos.as_flattened_mut().chunks_exact_mut(w));
+        let consts = inv[..whole].as_flattened().chunks_exact(w).zip(radius[..whole].chunks_exact(R::LANES)).zip(refs[..whole].chunks_exact(R::LANES)).zip(margin[..whole].chunks_exact(R::LANES));
+        for ((((s, f), v), x), (((im, r), g), m)) in groups.zip(consts) {
+            // Component k·LANES.. of the group: v = 1·v + Δt·F·(1/m) + 0, x += Δt·v.
+            let (mut vn, mut xn) = ([zero; 3], [zero; 3]);
+            for k in 0..3 {
+                let at = k * R::LANES;
+                let fk = R::load(&s[at..]);
+                zero.store(&mut s[at..]);
+                fk.store(&mut f[at..]);
+                vn[k] = velocity(one, R::load(&v[at..]), dt, fk, R::load(&im[at..]), zero);
+                vn[k].store(&mut v[at..]);
+                xn[k] = position(R::load(&x[at..]), dt, vn[k]);
+                xn[k].store(&mut x[at..]);
             }
-            (_mm256_movemask_pd(bad) != 0, _mm256_movemask_pd(drifted) != 0)
-        };
-        let tail = Free {
-            dt_s,
-            inv_mass_3: &inv[whole..],
-            sum: sum_tail,
-            force: force_tail,
-            vel: vel_tail,
-            pos: pos_tail,
-            radius: &radius[whole..],
-            refs: &refs[whole..],
-            margin: &margin[whole..],
-            limit2,
-        };
-        let (b, d) = tail.advance_here();
-        (bad | b, drifted | d)
-    }
-
-    #[inline(always)]
-    fn advance_here(self) -> (bool, bool) {
-        let Free { dt_s, inv_mass_3, sum, force, vel, pos, radius, refs, margin, limit2 } = self;
-        free_undamped(dt_s, inv_mass_3.as_flattened(), sum.as_flattened_mut(), force.as_flattened_mut(), vel.as_flattened_mut(), pos.as_flattened_mut());
-        let (mut bad, mut drifted) = (false, false);
-        for q in 0..vel.len() {
-            bad |= too_fast(vel[q], radius[q], limit2);
-            let (dx, dy) = (pos[q][0] - refs[q][0], pos[q][1] - refs[q][1]);
-            drifted |= dx * dx + dy * dy > margin[q] * margin[q];
+            let (vx, vy, spin) = R::columns(vn[0], vn[1], vn[2]);
+            bad = bad | too_fast(vx, vy, spin, R::load(r), limit2_r);
+            let (px, py, _) = R::columns(xn[0], xn[1], xn[2]);
+            let (rx, ry) = R::rows_xy(g);
+            far = far | drifted(px, py, rx, ry, R::load(m));
         }
-        (bad, drifted)
+        let (mut bad, mut far) = (bad.any(), far.any());
+        if whole < n {
+            let tail = Free {
+                dt_s,
+                inv_mass_3: &inv[whole..],
+                sum: sum_tail,
+                force: force_tail,
+                vel: vel_tail,
+                pos: pos_tail,
+                radius: &radius[whole..],
+                refs: &refs[whole..],
+                margin: &margin[whole..],
+                limit2,
+            };
+            let (b, d) = tail.advance_as::<f64>();
+            bad |= b;
+            far |= d;
+        }
+        (bad, far)
     }
 }
 
-/// The undamped central-difference update of free elements with no external force, over the
-/// components of their `[x, y, θ]` triples as flat arrays: each contact sum `sum` becomes the
-/// force `force` and is zeroed, v += Δt·F/m, x += Δt·v. The same operations in the same order
-/// as the general loop's (whose 1.0·v is v exactly), so the same bits.
-#[inline(always)]
-fn free_undamped(dt_s: f64, inv_mass: &[f64], sum: &mut [f64], force: &mut [f64], vel: &mut [f64], pos: &mut [f64]) {
-    let n = sum.len();
-    let (inv_mass, force, vel, pos) = (&inv_mass[..n], &mut force[..n], &mut vel[..n], &mut pos[..n]);
-    for q in 0..n {
-        let f = std::mem::take(&mut sum[q]);
-        force[q] = f;
-        let v = vel[q] + dt_s * f * inv_mass[q] + 0.0;
-        vel[q] = v;
-        pos[q] += dt_s * v;
-    }
-}
-
-/// Four `[x, y, θ]` rows held as three vectors of their twelve components in order
-/// (`[x0 y0 θ0 x1]`, `[y1 θ1 x2 y2]`, `[θ2 x3 y3 θ3]`) put into lanes: (x, y, θ), lane l row l.
-///
-/// # Safety
-/// The processor must have AVX; call it from a function compiled for AVX.
-#[cfg(target_arch = "x86_64")]
-#[inline(always)]
-unsafe fn columns(a: std::arch::x86_64::__m256d, b: std::arch::x86_64::__m256d, c: std::arch::x86_64::__m256d) -> (std::arch::x86_64::__m256d, std::arch::x86_64::__m256d, std::arch::x86_64::__m256d) {
-    use std::arch::x86_64::*;
-    // SAFETY: AVX (the caller's contract); shuffles only.
-    unsafe {
-        // [x0 y0 x2 y2], [θ0 x1 θ2 x3], [y1 θ1 y3 θ3]: each lane now holds its row's component
-        // in one of two vectors.
-        let xy = _mm256_permute2f128_pd::<0x30>(a, b);
-        let tx = _mm256_permute2f128_pd::<0x21>(a, c);
-        let yt = _mm256_permute2f128_pd::<0x30>(b, c);
-        (_mm256_blend_pd::<0b1010>(xy, tx), _mm256_shuffle_pd::<0b0101>(xy, yt), _mm256_blend_pd::<0b1010>(tx, yt))
+impl lanes::Task for Free<'_> {
+    type Output = (bool, bool);
+    #[inline(always)]
+    fn run<L: Lanes>(self) -> (bool, bool) {
+        self.advance_as::<L>()
     }
 }
 
@@ -391,7 +359,7 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans } = m;
+    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans, lane_width } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
@@ -436,7 +404,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
                     margin: &margin[a..b],
                     limit2,
                 };
-                let (b1, d1) = free.advance();
+                let (b1, d1) = free.advance(lane_width);
                 bad |= b1;
                 drifted |= d1;
                 o = b;
@@ -472,38 +440,35 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
                     [0.0; 3]
                 };
                 let v1 = [
-                    c1 * v0[0] + c2 * fx * inv_mass[o] + c3 * vr[0],
-                    c1 * v0[1] + c2 * fy * inv_mass[o] + c3 * vr[1],
-                    c1 * v0[2] + c2 * tz * inv_inertia[o] + c3 * vr[2],
+                    velocity(c1, v0[0], c2, fx, inv_mass[o], c3 * vr[0]),
+                    velocity(c1, v0[1], c2, fy, inv_mass[o], c3 * vr[1]),
+                    velocity(c1, v0[2], c2, tz, inv_inertia[o], c3 * vr[2]),
                 ];
                 let mid = [0.5 * (v0[0] + v1[0]) - vr[0], 0.5 * (v0[1] + v1[1]) - vr[1], 0.5 * (v0[2] + v1[2]) - vr[2]];
                 r.mass_damping_j +=
                     p.alpha_per_s * (mass[o] * (mid[0] * mid[0] + mid[1] * mid[1]) + inertia[o] * mid[2] * mid[2]) * p.dt_s;
                 v1
             } else {
-                // α = 0: c1 = 1, c2 = Δt, c3 = 0, written out so that the bits are those of
-                // the damped form with α = 0.
+                // α = 0: c1 = 1, c2 = Δt, c3 = 0, so that the bits are those of the damped form
+                // with α = 0.
                 [
-                    1.0 * v0[0] + p.dt_s * fx * inv_mass[o] + 0.0,
-                    1.0 * v0[1] + p.dt_s * fy * inv_mass[o] + 0.0,
-                    1.0 * v0[2] + p.dt_s * tz * inv_inertia[o] + 0.0,
+                    velocity(1.0, v0[0], p.dt_s, fx, inv_mass[o], 0.0),
+                    velocity(1.0, v0[1], p.dt_s, fy, inv_mass[o], 0.0),
+                    velocity(1.0, v0[2], p.dt_s, tz, inv_inertia[o], 0.0),
                 ]
             };
             if EXTERNAL && motion[o] == 0 {
                 r.external_j += (ex * v1[0] + ey * v1[1]) * p.dt_s;
             }
             vs[o] = v1;
-            x[0] += p.dt_s * v1[0];
-            x[1] += p.dt_s * v1[1];
-            x[2] += p.dt_s * v1[2];
-            bad |= too_fast(v1, radius[o], limit2);
-            let (dx, dy) = (x[0] - refs[o][0], x[1] - refs[o][1]);
-            drifted |= dx * dx + dy * dy > margin[o] * margin[o];
+            *x = std::array::from_fn(|d| position(x[d], p.dt_s, v1[d]));
+            bad |= row_too_fast(v1, radius[o], limit2);
+            drifted |= self::drifted(x[0], x[1], refs[o][0], refs[o][1], margin[o]);
             o += 1;
         }
         r.drifted = drifted;
         if bad {
-            r.first_bad = base + vs.iter().zip(radius).position(|(&v, &r)| too_fast(v, r, limit2)).expect("an element was too fast");
+            r.first_bad = base + vs.iter().zip(radius).position(|(&v, &r)| row_too_fast(v, r, limit2)).expect("an element was too fast");
         }
         r
     };
@@ -522,6 +487,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
 #[cfg(test)]
 mod tests {
     use super::{Free, free_run};
+    use crate::kernel::lanes::{self, Width};
 
     /// Random free rows for [`Free`]: (inverse masses, sums, velocities, positions, radii,
     /// reference positions, margins), with element `special` set so that it sits exactly on
@@ -570,27 +536,28 @@ mod tests {
     /// of which some are too fast or drifted and some not.
     #[test]
     fn four_lane_motion_matches_one_at_a_time() {
-        if !super::super::bonds4::available() {
-            return;
-        }
         let (mut answers, mut cases) = ([[0usize; 2]; 2], 0);
         for n in 0..=13 {
             for seed in 0..24u64 {
                 let (special, kind) = ((seed as usize * 5) % n.max(1), seed % 4);
                 let limit2 = if seed % 3 == 0 { 25.0 } else { 9.0 };
                 let (inv, sum, vel, pos, radius, refs, margin) = rows(n, seed + 100 * n as u64, special, kind);
-                let run = |lanes: bool| {
+                let run = |width: Option<Width>| {
                     let (mut sum, mut force, mut vel, mut pos) = (sum.clone(), vec![[7.0; 3]; n], vel.clone(), pos.clone());
                     let free = Free { dt_s: 1e-3, inv_mass_3: &inv, sum: &mut sum, force: &mut force, vel: &mut vel, pos: &mut pos, radius: &radius, refs: &refs, margin: &margin, limit2 };
-                    // SAFETY: AVX is there (checked above).
-                    let flags = if lanes { unsafe { free.advance_avx() } } else { free.advance_here() };
+                    let flags = match width {
+                        Some(w) => lanes::run_as(w, free),
+                        None => free.advance_as::<f64>(),
+                    };
                     let bits = |a: &[[f64; 3]]| a.iter().flatten().map(|v| v.to_bits()).collect::<Vec<_>>();
                     (flags, [bits(&sum), bits(&force), bits(&vel), bits(&pos)])
                 };
-                let (lanes, one) = (run(true), run(false));
-                assert_eq!(lanes, one, "{n} elements, seed {seed}");
-                answers[0][lanes.0.0 as usize] += 1;
-                answers[1][lanes.0.1 as usize] += 1;
+                let one = run(None);
+                for w in lanes::widths() {
+                    assert_eq!(run(Some(w)), one, "{n} elements, seed {seed}, {w:?} lanes");
+                }
+                answers[0][one.0.0 as usize] += 1;
+                answers[1][one.0.1 as usize] += 1;
                 cases += 1;
             }
         }
@@ -602,19 +569,15 @@ mod tests {
     /// at a time.
     #[test]
     fn four_lane_motion_on_the_limit_and_margin_is_quiet() {
-        if !super::super::bonds4::available() {
-            return;
-        }
         for n in [1, 4, 5, 8] {
-            for special in 0..n {
+            for (special, w) in (0..n).flat_map(|s| lanes::widths().into_iter().map(move |w| (s, w))) {
                 let (inv, mut sum, mut vel, pos, radius, mut refs, mut margin) = rows(n, 7, special, 0);
                 for e in (0..n).filter(|&e| e != special) {
                     (sum[e], vel[e], refs[e], margin[e]) = ([0.0; 3], [0.0; 3], [pos[e][0], pos[e][1]], 1.0);
                 }
                 let (mut pos, mut force) = (pos, vec![[0.0; 3]; n]);
                 let free = Free { dt_s: 0.125, inv_mass_3: &inv, sum: &mut sum, force: &mut force, vel: &mut vel, pos: &mut pos, radius: &radius, refs: &refs, margin: &margin, limit2: 25.0 };
-                // SAFETY: AVX is there (checked above).
-                assert_eq!(unsafe { free.advance_avx() }, (false, false), "{n} elements, the one on the limit at {special}");
+                assert_eq!(lanes::run_as(w, free), (false, false), "{n} elements, the one on the limit at {special}, {w:?} lanes");
                 assert_eq!((pos[special], vel[special]), ([3.375, 4.5, 0.5], [3.0, 4.0, 0.0]), "the step as meant");
             }
         }

@@ -16,12 +16,12 @@ pub mod boundary;
 pub mod build;
 pub mod checkpoint;
 pub mod contacts;
-pub mod bonds4;
-pub mod mixed4;
 pub mod energy;
 pub mod forces;
 pub mod geometry;
+pub mod groups;
 pub mod integrate;
+pub mod lanes;
 pub mod law;
 pub mod neighbours;
 pub mod pieces;
@@ -150,9 +150,14 @@ pub struct Model {
     /// on it; smaller pieces balance the threads better and send more contributions through the
     /// serial fix-up.
     pub scatter_piece_contacts: usize,
-    /// Take the contacts four at a time where the law parts and the processor allow (`bonds4`,
-    /// `mixed4`; the same bits as one at a time). Off only to measure what it gains.
+    /// Take the contacts four at a time where the law parts allow (`groups`, on the widest
+    /// `lanes` the processor has; the same bits as one at a time). Off only to measure what it
+    /// gains.
     pub four_lanes: bool,
+    /// The lanes of the four-at-a-time paths, contacts and free elements alike: the widest the
+    /// processor has (`lanes::widest`); the portable ones to check them in whole runs (the
+    /// same bits).
+    pub lane_width: lanes::Width,
     /// The rate part's smoothed velocity field (`law::rate_field`): its grid is configuration,
     /// its values are remade from the state at every step.
     pub rate_field: law::rate_field::RateField,
@@ -255,6 +260,7 @@ impl Model {
             out,
             record: self.record_contact_forces,
             four_lanes: self.four_lanes,
+            lane_width: self.lane_width,
             rate_vel: &self.rate_field.vel_mps,
         };
         self.parts.dispatch(stage);
@@ -304,6 +310,7 @@ impl Model {
             p,
             partial: &mut s.motion_partial,
             spans,
+            lane_width: self.lane_width,
         };
         integrate::advance(parts, motion);
         let mut total = MotionReport::default();
@@ -402,6 +409,7 @@ impl Model {
             out: forces::Out::Stored,
             record: true,
             four_lanes: self.four_lanes,
+            lane_width: self.lane_width,
             rate_vel: &self.rate_field.vel_mps,
         };
         Parts { damping: false, ..self.parts }.dispatch(stage);

@@ -9,7 +9,7 @@
 //! any number of pieces or threads. An element outside every range (a projectile's element that
 //! pieces far apart touch) is made by the fix-up alone, from zero, in the same order.
 //!
-//! The ranges are disjoint slices of the sums: no unsafe code, and the compiler knows the
+//! The ranges are disjoint slices of the sums: safe code only, and the compiler knows the
 //! pieces' writes alias nothing else. A plan that did not fit the list would change bits (the
 //! thread-count tests would see it), never memory safety.
 //!

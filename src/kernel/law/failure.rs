@@ -5,10 +5,12 @@
 //! (δ_p,max = 0); the energy criterion (eq 5.7) when the area under the normal force–opening
 //! curve reaches G_f × 2Rt, i.e. δ_p > δ_max − δ_crit.
 
-/// True when a bond with plastic opening `dp_m` must break.
+use crate::kernel::lanes::Real;
+
+/// True where a bond with plastic opening `dp_m` (m) must break.
 #[inline(always)]
-pub fn breaks(dp_m: f64, plastic_opening_at_break_m: f64) -> bool {
-    dp_m > plastic_opening_at_break_m
+pub fn breaks<R: Real>(dp_m: R, plastic_opening_at_break_m: R) -> R::Mask {
+    dp_m.gt(plastic_opening_at_break_m)
 }
 
 /// Elastic energy stored in the bond's springs, released when it breaks, J.

@@ -25,6 +25,7 @@ use serde::{Deserialize, Serialize};
 
 use super::{ContactClass, Dissipation, Kinematics, PartSet, Springs, damping, force, normal, tangential};
 use crate::kernel::contacts::{Contact, ContactForce};
+use crate::kernel::lanes::{Mask, Real};
 use crate::material::Material;
 
 /// Springs and Coulomb constants of a contact class's frictional contacts.
@@ -73,7 +74,7 @@ pub fn touching<P: PartSet>(c: &mut Contact, k: &ContactClass, g: &Kinematics, d
     let mut f_n = normal::frictional(opening, s.kn_n_per_m);
     let (mut f_t, mut slid) = (0.0, false);
     if P::FRICTION {
-        let limit = k.contact.mu * (-f_n) + k.contact.cohesion_n;
+        let limit = coulomb(f_n, k.contact.mu, k.contact.cohesion_n);
         let (ft, ut, w) = tangential::capped_spring(c.ut_m, g.vt_mps * dt_s, s.kt_n_per_m, s.kt_n_per_m, limit);
         c.ut_m = ut;
         diss.friction_j += w;
@@ -94,15 +95,44 @@ pub fn touching<P: PartSet>(c: &mut Contact, k: &ContactClass, g: &Kinematics, d
     force(g, f_n, f_t)
 }
 
+/// Coulomb's limit on the tangential force, −μ Fn + c, N, of normal force `f_n` (N, tension
+/// positive), coefficient `mu` and cohesion `cohesion_n` (N).
+#[inline(always)]
+pub fn coulomb<R: Real>(f_n: R, mu: R, cohesion_n: R) -> R {
+    mu * (-f_n) + cohesion_n
+}
+
 /// A frictional contact that is apart (distance² `d2_m2` ≥ rest²): it forgets its shear
 /// spring (booking what it held as friction) and its rest length relaxes toward r_i + r_j.
 #[inline(always)]
 pub fn apart(c: &mut Contact, k: &ContactClass, d2_m2: f64, diss: &mut Dissipation) {
-    if c.ut_m != 0.0 {
-        diss.friction_j += 0.5 * k.contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
-        c.ut_m = 0.0;
-    }
-    if c.rest_m != k.radius_sum_m {
-        c.rest_m = k.radius_sum_m.min(d2_m2.sqrt());
-    }
+    let (ut, rest, w) = forget(c.ut_m, c.rest_m, 0.5 * k.contact.springs.kt_n_per_m, k.radius_sum_m, || d2_m2.sqrt());
+    diss.friction_j += w;
+    (c.ut_m, c.rest_m) = (ut, rest);
+}
+
+/// [`apart`] over any [`Real`]: from shear spring `ut_m` and rest length `rest_m` (m), with half
+/// the tangential stiffness `half_kt` (N/m), r_i + r_j `radius_sum_m` and the centre distance
+/// `d_m()` (m, asked only where the rest length moves), the new shear spring (0), the new rest
+/// length min(d, r_i + r_j) and the energy the spring held, J (+0 where it held none).
+#[inline(always)]
+pub fn forget<R: Real>(ut_m: R, rest_m: R, half_kt: R, radius_sum_m: R, d_m: impl FnOnce() -> R) -> (R, R, R) {
+    let (ut, w) = ut_m.eq(R::zero()).blend((ut_m, R::zero()), #[inline(always)] || (R::zero(), half_kt * ut_m * ut_m));
+    let rest = rest_m.eq(radius_sum_m).blend(rest_m, #[inline(always)] || d_m().min(radius_sum_m));
+    (ut, rest, w)
+}
+
+/// True where a frictional pair of rest length `rest_m` (m) at squared distance `d2_m2` (m²)
+/// does not touch: its centres at least the rest length apart.
+#[inline(always)]
+pub fn is_apart<R: Real>(d2_m2: R, rest_m: R) -> R::Mask {
+    d2_m2.ge(rest_m * rest_m)
+}
+
+/// True where a frictional pair is apart with no shear spring (`ut_m`, m) and its rest length
+/// back at r_i + r_j (`radius_sum_m`): [`apart`] would change nothing, so the contact loop skips
+/// it.
+#[inline(always)]
+pub fn idle<R: Real>(ut_m: R, rest_m: R, radius_sum_m: R, d2_m2: R) -> R::Mask {
+    ut_m.eq(R::zero()) & rest_m.eq(radius_sum_m) & is_apart(d2_m2, rest_m)
 }

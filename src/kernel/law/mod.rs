@@ -25,6 +25,7 @@ pub mod tangential;
 use serde::{Deserialize, Serialize};
 
 use super::contacts::{Bond, Contact, ContactForce};
+use super::lanes::Real;
 use crate::error::Result;
 use crate::material::{Arrangement, FailureCriterion, Material, Plane, Strength};
 
@@ -303,23 +304,24 @@ dissipation! {
     rate_work_j,
 }
 
-/// Kinematics of a contact at the current configuration.
+/// Kinematics of a contact at the current configuration (of one contact, or of several in
+/// lanes).
 #[derive(Debug, Clone, Copy)]
-pub struct Kinematics {
+pub struct Kinematics<R = f64> {
     /// Centre distance d, m.
-    pub d_m: f64,
+    pub d_m: R,
     /// Unit normal from i to j.
-    pub nx: f64,
+    pub nx: R,
     /// Unit normal y.
-    pub ny: f64,
+    pub ny: R,
     /// Relative normal velocity of j w.r.t. i (> 0 separating), m/s.
-    pub vn_mps: f64,
+    pub vn_mps: R,
     /// Relative tangential velocity of the contact points (j w.r.t. i along t = (−ny, nx)), m/s.
-    pub vt_mps: f64,
+    pub vt_mps: R,
     /// Lever arm of i, m.
-    pub li_m: f64,
+    pub li_m: R,
     /// Lever arm of j, m.
-    pub lj_m: f64,
+    pub lj_m: R,
 }
 
 /// Evaluate one touching or bonded contact: update its history and return its force. `x` is
@@ -439,10 +441,12 @@ pub fn stored_energy_j<P: PartSet>(c: &Contact, x: &Extra, k: &ContactClass, g: 
 /// Cartesian force on i and the torques, from the normal (tension positive) and tangential force.
 #[inline(always)]
 pub(crate) fn force(g: &Kinematics, f_n: f64, f_t: f64) -> ContactForce {
-    ContactForce {
-        fx: f_n * g.nx - f_t * g.ny,
-        fy: f_n * g.ny + f_t * g.nx,
-        ti: g.li_m * f_t,
-        tj: g.lj_m * f_t,
-    }
+    let [fx, fy, ti, tj] = components(g, f_n, f_t);
+    ContactForce { fx, fy, ti, tj }
+}
+
+/// [`force`] over any [`Real`]: [Fx N, Fy N, T_i N·m, T_j N·m].
+#[inline(always)]
+pub(crate) fn components<R: Real>(g: &Kinematics<R>, f_n: R, f_t: R) -> [R; 4] {
+    [f_n * g.nx - f_t * g.ny, f_n * g.ny + f_t * g.nx, g.li_m * f_t, g.lj_m * f_t]
 }

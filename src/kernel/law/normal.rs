@@ -1,6 +1,8 @@
 //! Normal part: bonded (tension and compression, tensile plateau, Fig 2.3 and Fig 5.4a) and
 //! frictional (compression only, Fig 2.4a).
 
+use crate::kernel::lanes::Real;
+
 /// Bonded normal spring with a tensile plateau at `plateau_n` (∞ for no yield) and plastic
 /// opening history `dp` (m). `opening_m` = d − d0 (> 0 in tension), `step_m` its change over
 /// this step, `kn_last` the stiffness the spring had in the last step. Unloading from the plateau follows the initial slope (seed §5). Returns (normal
@@ -12,8 +14,8 @@
 /// rate-enhanced plateau decaying with the held rate).
 #[inline(always)]
 pub fn bonded(opening_m: f64, step_m: f64, dp: &mut f64, kn: f64, kn_last: f64, plateau_n: f64) -> (f64, f64) {
-    let f = kn * (opening_m - *dp);
-    if f <= plateau_n {
+    let (f, below) = elastic(opening_m, *dp, kn, plateau_n);
+    if below {
         (f, 0.0)
     } else {
         let dp_new = opening_m - plateau_n / kn;
@@ -24,10 +26,19 @@ pub fn bonded(opening_m: f64, step_m: f64, dp: &mut f64, kn: f64, kn_last: f64, 
     }
 }
 
-/// Frictional normal spring: compression only. `opening_m` = d − d0 < 0 when touching.
+/// The bonded normal spring's elastic branch: the force Kn (opening − δ_p), N (tension
+/// positive), and where it stays at or below the plateau `plateau_n` (N), where [`bonded`] keeps
+/// it.
 #[inline(always)]
-pub fn frictional(opening_m: f64, kn: f64) -> f64 {
-    kn * opening_m.min(0.0)
+pub fn elastic<R: Real>(opening_m: R, dp_m: R, kn: R, plateau_n: R) -> (R, R::Mask) {
+    let f = kn * (opening_m - dp_m);
+    (f, f.le(plateau_n))
+}
+
+/// Frictional normal spring: compression only, N. `opening_m` = d − d0 < 0 when touching.
+#[inline(always)]
+pub fn frictional<R: Real>(opening_m: R, kn: R) -> R {
+    kn * opening_m.min(R::zero())
 }
 
 #[cfg(test)]

@@ -2,6 +2,8 @@
 //! a plastic limit. The same return map serves the bond's shear plateau (limit f_t^crit,
 //! eq 5.6) and Coulomb sliding with cohesion (limit −μ Fn + c, eq 2.1).
 
+use crate::kernel::lanes::{Mask, Real};
+
 /// Return map of a tangential spring: elastic displacement `ut_prev` (m, the force of the last
 /// step is `kt_last`·ut_prev) plus this step's relative tangential displacement `increment_m`,
 /// stiffness `kt`, capped at `limit_n`. Returns (force N, new elastic displacement m,
@@ -14,16 +16,22 @@
 /// that falls during the step, as the cap −μ Fn does while an impact unloads: in the 250 m/s
 /// impact of `tests/energy_ledger.rs` it left 14 % of the friction out of the ledger.
 #[inline(always)]
-pub fn capped_spring(ut_prev: f64, increment_m: f64, kt: f64, kt_last: f64, limit_n: f64) -> (f64, f64, f64) {
-    let ut_trial = ut_prev + increment_m;
-    let f = kt * ut_trial;
-    if f.abs() <= limit_n {
-        (f, ut_trial, 0.0)
-    } else {
+pub fn capped_spring<R: Real>(ut_prev: R, increment_m: R, kt: R, kt_last: R, limit_n: R) -> (R, R, R) {
+    let (ut_trial, f, holds) = trial(ut_prev, increment_m, kt, limit_n);
+    holds.when((f, ut_trial, R::zero()), #[inline(always)] || {
         let capped = limit_n.copysign(f);
         let ut = capped / kt;
-        (capped, ut, 0.5 * (kt_last * ut_prev + capped) * (ut_trial - ut))
-    }
+        (capped, ut, R::splat(0.5) * (kt_last * ut_prev + capped) * (ut_trial - ut))
+    })
+}
+
+/// The elastic trial of [`capped_spring`]: (u_t m, force N, where |force| ≤ `limit_n` and the
+/// spring keeps it).
+#[inline(always)]
+pub fn trial<R: Real>(ut_prev: R, increment_m: R, kt: R, limit_n: R) -> (R, R, R::Mask) {
+    let ut_trial = ut_prev + increment_m;
+    let f = kt * ut_trial;
+    (ut_trial, f, f.abs().le(limit_n))
 }
 
 #[cfg(test)]
