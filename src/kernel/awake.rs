@@ -8,11 +8,8 @@
 //! core spins meanwhile, which only a run that has the pool to itself should ask for. Which
 //! thread runs a job never changes a result.
 //!
-//! Measured on that event on two threads, batches alternately with and without (per step,
-//! seven runs): 0.970–1.011×, median 0.980×. Looking less often (64 spins between looks)
-//! gave no more (median 0.988×, five runs). (Alternate steps of one run differ by up to 2 % on
-//! two threads with the same code in both slots — README, *The owner rule, the method's
-//! resolution* — so the gain is not shown; the change is bitwise neutral.)
+//! The gain is within the machine's noise (measured in the commit that made it); the change is
+//! bitwise neutral.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -144,9 +144,8 @@ fn parallel<P: PartSet, const FOUR: bool>(at: &StepInput<'_>, list: &mut [Contac
     }
 }
 
-/// One chunk of [`parallel`] on lanes, with the groups of four. (A task of its own: the
-/// closures of `parallel` are compiled without AVX, in which the lanes' intrinsics would be
-/// calls — 0.27× the one-thread speed on two threads, as first built.)
+/// One chunk of [`parallel`] on lanes, with the groups of four: a task of its own, because the
+/// closures of `parallel` are compiled without AVX, where the lanes' intrinsics would be calls.
 struct ChunkFour<'a, 'b, P> {
     at: &'b StepInput<'a>,
     cs: &'b mut [Contact],
@@ -229,10 +228,8 @@ fn scatter<P: PartSet, const RECORD: bool, const FOUR: bool, L: Lanes, S: Sums>(
 ) {
     if FOUR {
         // A local copy, which the compiler keeps in registers (the argument lives in the
-        // caller's frame, where the running sum was loaded and stored per contact: 5
-        // instructions more per contact-step on the benchmark block, by cachegrind). Not in
-        // the scalar loop, which the copy made 1.25× slower (as it did the velocities cut to
-        // the positions' length in `each`), although it took fewer instructions.
+        // caller's frame, where the running sum is loaded and stored per contact). Not in the
+        // scalar loop, which the copy made slower.
         let mut local = out;
         return scatter_into::<P, RECORD, FOUR, L, S>(at, list, extra, force, partial, &mut local);
     }
@@ -265,9 +262,7 @@ fn scatter_into<P: PartSet, const RECORD: bool, const FOUR: bool, L: Lanes, S: S
 }
 
 /// [`scatter`] one at a time, as a function of its own: inlined into the pool's closure, where
-/// the compiler knows less of what aliases what, the same loop ran 1.15× slower; and inlined
-/// into [`Stage::visit`] on one thread, 1.004–1.026× the time of this (the level-1 and level-2
-/// penetration events, steps of one run alternately, six runs).
+/// the compiler knows less of what aliases what, the same loop ran slower.
 #[inline(never)]
 fn scatter_alone<P: PartSet, const RECORD: bool, S: Sums>(
     at: &StepInput<'_>,
@@ -360,9 +355,7 @@ impl Sums for Serial<'_> {
 #[inline(always)]
 fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Contact], xs: &mut [Extra], d: &mut Dissipation, mut sink: impl FnMut(usize, &Contact, &ContactForce)) {
     // The velocities cut to the positions' length, so that the compiler can drop checks of a
-    // row against both (by cachegrind on the benchmark block: 10.5 instructions fewer per
-    // contact-step when each group made its own geometry, 1.9 since the geometry is made eight
-    // groups ahead, in a loop of its own; only for the lanes, see `scatter`).
+    // row against both (only for the lanes, see `scatter`).
     let cut = if FOUR { StepInput { vel: &at.vel[..at.pos.len()], ..*at } } else { StepInput { ..*at } };
     let at = &cut;
     let mut scratch = Extra::new(0.0);
@@ -373,9 +366,7 @@ fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Co
         // division start a long dependent chain (normal, shear spring, elastic test, forces)
         // that the processor's reorder window could not hide behind the ~350 instructions of
         // the group's law; made eight at a time, the roots and divisions run back to back and
-        // the laws find them done. More instructions (the velocities' rows checked apart from
-        // the positions'), less time: the peers' beam 0.85–0.91× (six alternating pairs), 16
-        // at a time the same.
+        // the laws find them done: more instructions, less time.
         const AHEAD: usize = 8;
         let zero = L::zero();
         let mut geos = [Geometry { d2_m2: zero, d_m: zero, nx: zero, ny: zero }; AHEAD];
@@ -443,9 +434,7 @@ fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Co
     // the plateaus, the dashpots, the forces) of more instructions than the processor's
     // reorder window holds, so one contact's chain could not overlap the next's; cut in two,
     // the block's first halves run side by side, and then its second halves. A shorter law
-    // pays for the blocks and gains less (the block bench one at a time, in blocks against
-    // not, medians of alternating runs: no optional part 1.2x, compaction alone 1.15x, damping
-    // alone 0.83x).
+    // pays for the blocks and gains nothing, so it is taken one at a time.
     while from < cs.len() {
         let to = (from + ONE_AHEAD).min(cs.len());
         let mut ahead = [Ahead::Nothing; ONE_AHEAD];
@@ -454,8 +443,7 @@ fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Co
             *a = first_half::<P>(at, &cs[l], x);
         }
         // By reference: an array taken by value is moved into its iterator, a memcpy of the
-        // block (a twelfth of the level-2 event's samples under perf, the contact stage's
-        // largest after the law).
+        // block.
         for (l, a) in (from..to).zip(&ahead) {
             let x = if P::EXTRA { &mut xs[l] } else { &mut scratch };
             let f = second_half::<P>(at, &mut cs[l], x, *a, d);
@@ -465,8 +453,8 @@ fn each<P: PartSet, L: Lanes, const FOUR: bool>(at: &StepInput<'_>, cs: &mut [Co
     }
 }
 
-/// Contacts a block of the one-at-a-time loop takes at once (4 and 16 were no faster than 8 on
-/// the penetration event, alternating runs).
+/// Contacts a block of the one-at-a-time loop takes at once (neither fewer nor more was
+/// faster).
 const ONE_AHEAD: usize = 8;
 
 /// What the first half of a contact's evaluation leaves for the second.
@@ -515,7 +503,7 @@ fn one<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, x: &mut Extra, d: &mut D
 }
 
 /// A frictional contact, out of line: inlined beside the bond law it made the all-bonded loop
-/// 2.2× slower (the benchmark block: 25 → 11.5 ns per contact for the contact stage).
+/// more than twice as slow.
 #[inline(never)]
 fn frictional<P: PartSet>(at: &StepInput<'_>, c: &mut Contact, k: &ContactClass, s: Separation, d: &mut Dissipation) -> ContactForce {
     if law::friction::is_apart(s.d2_m2, c.rest_m) {

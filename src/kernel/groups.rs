@@ -11,8 +11,8 @@
 //!   forget). A cracked body's contact list mixes the kinds at random, so the scalar loop's kind
 //!   tests are guessed wrong about half the time; here every lane computes every kind and keeps
 //!   its own, with one test per group (does some bond leave the elastic branch?) that is almost
-//!   never true. On the all-bonded groups [`bonds`], which computes only the bonds, is faster
-//!   (1.06–1.20× over the peers' beam's first 1 000 steps), so the contact loop keeps both.
+//!   never true. On the all-bonded groups [`bonds`], which computes only the bonds, is faster,
+//!   so the contact loop keeps both.
 //!
 //! A group where some bond leaves the elastic branch yields nothing and changes nothing: the
 //! caller evaluates its contacts one by one with the full law.

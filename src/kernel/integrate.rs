@@ -276,9 +276,8 @@ impl Free<'_> {
     /// pass: each group's components are updated as flat arrays (for four elements, twelve
     /// components in three values), and the checks read the new velocities and positions from
     /// the registers, put into lanes by `Real::columns`, instead of a second pass over the rows
-    /// one element at a time (that pass was a twelfth of the time of the all-bonded block with
-    /// 13 145 elements; in one pass, the peers' beam on one thread took 0.96× the time of the
-    /// two). The same operations in the same order per component and per element, so the same
+    /// one element at a time, which cost more than the update. The same operations in the same
+    /// order per component and per element, so the same
     /// bits and the same answers (a NaN is too fast). The last elements (fewer than a group) go
     /// one at a time.
     #[inline(always)]

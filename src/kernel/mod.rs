@@ -279,11 +279,8 @@ impl Model {
         let drive = Drive { load_force_n: &s.load_now, motion_velocity: &s.motion_now, rigid_frame: &s.frame_now };
         let st = &mut self.state;
         // On the pool, each thread moves the elements its span of the contact stage added into
-        // (to the nearest chunk), and the next contact stage finds them in its cache: the two
-        // stages 0.968–0.996× the time of rayon's chunks taken by whichever thread was free
-        // (the level-2 event on two threads, steps of one run alternately, six runs, median
-        // 0.979; within the ~2 % by which alternate steps differ on two threads with the same
-        // code, README). Stealing still evens out the rest (`spans`).
+        // (to the nearest chunk), and the next contact stage finds them in its cache. Stealing
+        // still evens out the rest (`spans`).
         let spans = parallel.then(|| {
             // Span s's elements begin where its first piece's range does.
             let c = &st.contacts;

@@ -14,20 +14,14 @@
 //! thread-count tests would see it), never memory safety.
 //!
 //! Why not a gather: summing each element's forces over its adjacency after the stage reads
-//! every force twice through a scattered index (2.4× the one-thread motion stage on the
-//! level-2 penetration event, the largest part of why two threads were 1.52× one).
+//! every force twice through a scattered index, which cost more than the scatter saves.
 
 use super::contacts::{Contact, ContactForce};
 use super::forces::Sums;
 
 /// Contacts per piece at most by default: 32 chunks (see `Model::scatter_piece_contacts`).
 /// Only the first pieces of a span are this long, and they are its own thread's: fewer pieces,
-/// fewer contributions through the records. (The level-2 event on two threads: spans of 41
-/// chunks cut 27, 8, 4, 2 instead of 11, 16, 8, 4, 2 under a cap of 16 — the two front pieces
-/// were always the owner's anyway, and their cut sent ~2 000 contributions a step through the
-/// records; the contact stage 0.983–0.990× the time, steps of one run alternately under each
-/// cap, three runs — within the ~2 % by which alternate steps differ on two threads with the
-/// same code, README.)
+/// fewer contributions through the records.
 pub const PIECE: usize = 32 * super::forces::CHUNK;
 
 /// The pieces for `contacts` contacts on `threads` threads, pieces of `most` contacts at most

@@ -6,18 +6,8 @@
 //! with the jobs shrinking towards each span's end, what another thread takes first is small,
 //! and the threads finish closer together.
 //!
-//! Measured on the level-2 penetration event on two threads, the contact stage timed on alternate
-//! steps of one run (so that the machine's spells cancel; three runs each):
-//! - pieces of eight chunks taken in list order by whichever thread was free, which finish
-//!   together but send each piece to either core: 1.02–1.06× the time of rayon's halving of the
-//!   same list, which keeps each core on its half and idles at the end;
-//! - spans (`pieces::cuts`): 0.983–0.991× rayon's halving; the two threads' last pieces end
-//!   0.16–0.21 ms apart per step, against 0.29–0.30 ms;
-//! - the peers' beam: 0.92–0.94× (six pieces instead of ten, so fewer records).
-//!
-//! Alternate steps of one run differ by up to 2 % on two threads with the same code in both
-//! slots (README, *The owner rule, the method's resolution*): the spans' gain over rayon's
-//! halving is within it, their gain over pieces in list order is not.
+//! Spans rather than pieces in list order (which send each piece to either core) or rayon's
+//! halving (which idles one core at the end): measured, in the commit that made them.
 //!
 //! Which thread takes which job never changes a result: the jobs write disjoint data.
 

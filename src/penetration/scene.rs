@@ -20,7 +20,7 @@
 //! the 3D projectile's mass per presented area, W/(πD²/4) = W/(D t): t = πD/4 (a 2D projectile
 //! 4.8 times lighter per unit thickness than the source's), so weight, width, nose and length
 //! each act as they do on the 3D missile, and the calibrated strength stays within reach of
-//! what rate effects explain (README, "The 2D slice"). `thickness` takes a given slice
+//! what rate effects explain (`docs/penetration.md`). `thickness` takes a given slice
 //! thickness.
 
 use serde::{Deserialize, Serialize};
@@ -90,7 +90,7 @@ fn default_max_time() -> f64 {
 /// hold a given energy at a displacement amplitude 1/√(1 − (ωΔt/2)²) times the physical one
 /// (3.6× at 0.96 of the threshold, 2.3× at 0.9, 1.1× at 0.45), and the bonds see it: with the factor
 /// calibrated at 0.98 of the bound (F = 12.34) the run at 600 ft/s scabbed there (34.5 in, energy error 1.27 %), at 0.9
-/// and 0.45 it embedded (7.27 / 7.98 in, 0.40 / 0.23 %). README, "The time step".
+/// and 0.45 it embedded (7.27 / 7.98 in, 0.40 / 0.23 %): `docs/penetration.md`, "The time step".
 fn default_safety() -> f64 {
     0.9
 }
