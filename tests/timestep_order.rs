@@ -1,4 +1,4 @@
-//! Where the step's error in the penetration scene comes from ([6/6], "The time step" in the
+//! Where the step's error in the penetration scene comes from ([6/6], "The time step" in
 //! docs/penetration.md): the fracture, not the integrator. The CI scene (level 0) at 300 ft/s, the same
 //! contacts with the projectile, once with the concrete's strengths ×10⁴ (no bond breaks: the
 //! response is smooth) and once as calibrated (bonds break):
