@@ -189,8 +189,11 @@ impl Tracking {
             match self.unresisted_since {
                 Some((t0, v)) if (l.v_axial_mps - v).abs() <= spec.unresisted_change * v => {
                     if l.time_s - t0 >= spec.unresisted_s {
-                        self.perforation_time_s = Some(t0);
-                        self.v_residual_mps = v;
+                        // A projectile that was through once keeps that first exit.
+                        if self.perforation_time_s.is_none() {
+                            self.perforation_time_s = Some(t0);
+                            self.v_residual_mps = v;
+                        }
                         self.scab_time_s.get_or_insert(t0);
                         return Some("unresisted");
                     }
