@@ -6,7 +6,7 @@
 
 mod common;
 
-use demsweep::kernel::contacts::{Bond, Contact};
+use demsweep::kernel::contact::{Bond, Contact};
 use demsweep::material::CompactionSpec;
 use demsweep::material::RateSpec;
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, Kinematics};

@@ -8,7 +8,7 @@ mod common;
 
 use std::path::Path;
 
-use demsweep::kernel::contacts::{Bond, Contact, ContactForce};
+use demsweep::kernel::contact::{Bond, Contact, ContactForce};
 use demsweep::kernel::forces::{self, CHUNK, Out, Stage};
 use demsweep::kernel::law::rate_field::RateField;
 use demsweep::kernel::law::{self, Dissipation, Extra, PartSet, PartsVisitor};

@@ -4,7 +4,7 @@
 
 mod common;
 
-use demsweep::kernel::contacts::{Bond, Contact};
+use demsweep::kernel::contact::{Bond, Contact};
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, Kinematics};
 
 /// The law with no optional part.

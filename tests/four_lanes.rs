@@ -4,7 +4,7 @@
 
 mod common;
 
-use demsweep::kernel::contacts::{Bond, Contact, ContactForce};
+use demsweep::kernel::contact::{Bond, Contact, ContactForce};
 use demsweep::kernel::lanes::{self, Lanes, Task, Width};
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, With};
 use demsweep::kernel::{Threading, forces, geometry, groups};

@@ -177,7 +177,7 @@ fn bound_covers_a_projectile_pressed_into_a_block_with_every_contact_at_its_stif
     // build for everything that can happen, must cover the measured top of this state.
     use demsweep::material::CompactionSpec;
     use demsweep::material::RateSpec;
-    use demsweep::kernel::contacts::Bond;
+    use demsweep::kernel::contact::Bond;
     use demsweep::material::PoissonPolicy;
     use demsweep::units::psi_to_pa;
     let (rc, rs) = (0.00635, 0.0039484);

@@ -4,7 +4,7 @@
 
 use demsweep::penetration::scene::{Layout, OutcomeSpec, PenetrationScene};
 use demsweep::kernel::Model;
-use demsweep::kernel::contacts::Bond;
+use demsweep::kernel::contact::Bond;
 use demsweep::penetration::outcome::{Detector, Look, Tracking};
 use demsweep::units::M_PER_IN;
 

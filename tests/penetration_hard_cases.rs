@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use std::process::Command;
 
 use demsweep::penetration::scene::PenetrationScene;
-use demsweep::kernel::contacts::Bond;
+use demsweep::kernel::contact::Bond;
 use demsweep::penetration::outcome::Detector;
 use demsweep::penetration::{Finished, Hooks, run};
 use demsweep::units::{M_PER_IN, fps_to_mps};

@@ -4,7 +4,7 @@
 //! ones, and a bond pulled fast: dynamic strength, dynamic fracture energy, dynamic modulus and
 //! a ledger that closes.
 
-use demsweep::kernel::contacts::{Bond, Contact};
+use demsweep::kernel::contact::{Bond, Contact};
 use demsweep::kernel::law::rate;
 use demsweep::material::{CompressiveRate, RateSpec};
 use demsweep::kernel::law::{self, ContactClass, Dissipation, Extra, Kinematics};

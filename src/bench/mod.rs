@@ -360,7 +360,7 @@ pub fn measure_laws(sets: &[Laws], columns: usize, rows: usize, steps: u64, repe
 /// grid is transient and not counted.
 pub fn footprint(model: &Model) -> (f64, f64) {
     use std::mem::size_of;
-    use crate::kernel::contacts::{Contact, ContactForce};
+    use crate::kernel::contact::{Contact, ContactForce};
     use crate::kernel::law::Extra;
     let n = model.el.len().max(1);
     let el = &model.el;

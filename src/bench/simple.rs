@@ -5,7 +5,7 @@
 //! state, so it steps the same block from the same start; `tests/simple_kernel.rs` checks that
 //! it follows the full kernel's trajectory, which makes the timing comparison one of equal work.
 
-use crate::kernel::contacts::Bond;
+use crate::kernel::contact::Bond;
 use crate::kernel::Model;
 
 /// A bond of the simple kernel: its pair, class and the one history it has.

@@ -4,7 +4,8 @@
 use std::ops::Range;
 
 use super::boundary::{LoadGroup, MotionGroup};
-use super::contacts::{Contact, Contacts};
+use super::contact::Contact;
+use super::contacts::Contacts;
 use super::integrate::MotionParams;
 use super::law::{self, ContactClass, Extra, Parts};
 use super::stability;

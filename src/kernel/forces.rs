@@ -24,7 +24,7 @@ use std::marker::PhantomData;
 use super::geometry::{self, Geometry, Separation, separation};
 use super::lanes::{self, Lanes};
 use super::{groups, pieces, spans};
-use super::contacts::{Bond, Contact, ContactForce};
+use super::contact::{Bond, Contact, ContactForce};
 use super::law::rate_field::RateField;
 use super::law::{self, ContactClass, Dissipation, Extra, Kinematics, PartSet};
 

@@ -4,7 +4,7 @@
 //! ([`of`]), and from the velocities the relative velocity at the contact point
 //! ([`relative`]). One contact at a time ([`separation`]) or four in lanes ([`of_four`]).
 
-use super::contacts::Contact;
+use super::contact::Contact;
 use super::lanes::{Lanes, Real};
 use super::law::Kinematics;
 

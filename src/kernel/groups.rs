@@ -17,7 +17,7 @@
 //! A group where some bond leaves the elastic branch yields nothing and changes nothing: the
 //! caller evaluates its contacts one by one with the full law.
 
-use super::contacts::{Bond, Contact, ContactForce};
+use super::contact::{Bond, Contact, ContactForce};
 use super::geometry::{self, Geometry};
 use super::lanes::{Lanes, Mask};
 use super::law::{self, ContactClass, Dissipation, Kinematics, PartSet, failure, friction, normal, rate, tangential};

@@ -14,8 +14,9 @@ use super::contacts::Contacts;
 use super::lanes::{self, Lanes, Mask, Real};
 use super::state::Elements;
 
-/// Elements per chunk (fixed, for deterministic partial sums).
-pub const CHUNK: usize = 1024;
+/// Elements per chunk (fixed, for deterministic partial sums; the schedule files its records
+/// by it).
+pub const CHUNK: usize = super::pieces::MOTION_CHUNK;
 
 /// Parameters of the motion stage.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]

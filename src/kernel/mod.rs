@@ -15,6 +15,7 @@ pub(crate) mod awake;
 pub mod boundary;
 pub mod build;
 pub mod checkpoint;
+pub mod contact;
 pub mod contacts;
 pub mod energy;
 pub mod forces;
@@ -23,6 +24,7 @@ pub mod groups;
 pub mod integrate;
 pub mod lanes;
 pub mod law;
+pub mod ledger;
 pub mod neighbours;
 pub mod pieces;
 pub mod spans;
@@ -34,7 +36,7 @@ use std::ops::Range;
 use serde::{Deserialize, Serialize};
 
 use boundary::{LoadGroup, MotionGroup};
-use contacts::Bond;
+use contact::Bond;
 use integrate::{Drive, MotionParams, MotionReport};
 use law::{ContactClass, Dissipation, Parts};
 pub use state::{Elements, State};
@@ -528,24 +530,24 @@ impl Model {
         record: bool,
         pool: bool,
         contacts: &mut contacts::Contacts,
-        ledger: &mut energy::Ledger,
+        ledger: &mut ledger::Ledger,
     ) {
-        let touching = |c: &contacts::Contact| {
+        let touching = |c: &contact::Contact| {
             let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);
             (pj[0] - pi[0]).powi(2) + (pj[1] - pi[1]).powi(2) < c.rest_m * c.rest_m
         };
         let class_of = |i: u32, j: u32| class_index(el.kind[i as usize] as usize, el.kind[j as usize] as usize, kinds);
         let fresh = |i: u32, j: u32| {
             let class = class_of(i, j);
-            contacts::Contact::frictional(i, j, class, classes[class as usize].radius_sum_m)
+            contact::Contact::frictional(i, j, class, classes[class as usize].radius_sum_m)
         };
         let fresh_extra = |i: u32, j: u32| law::Extra::new(classes[class_of(i, j) as usize].radius_sum_m);
         let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
-        let release = |c: &contacts::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
+        let release = |c: &contact::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
         let mut released = Dissipation::default();
         contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, el.len(), pool);
         if record {
-            contacts.force.fill(contacts::ContactForce::default());
+            contacts.force.fill(contact::ContactForce::default());
         }
         ledger.contacts.add(&released);
     }
@@ -561,7 +563,7 @@ impl Model {
         energy::strain_energy_j(&self.el, &st.pos, &st.vel, &st.contacts, &self.classes, self.parts, self.motion.dt_s)
     }
 
-    /// Energy balance residual, J (see `energy::Ledger::residual_j`).
+    /// Energy balance residual, J (see `ledger::Ledger::residual_j`).
     pub fn energy_residual_j(&self) -> f64 {
         self.state.ledger.residual_j(self.kinetic_energy_j(), self.strain_energy_j())
     }

@@ -16,7 +16,7 @@
 //! Why not a gather: summing each element's forces over its adjacency after the stage reads
 //! every force twice through a scattered index, which cost more than the scatter saves.
 
-use super::contacts::{Contact, ContactForce};
+use super::contact::{Contact, ContactForce};
 use super::forces::Sums;
 
 /// Contacts per piece at most by default: 32 chunks (see `Model::scatter_piece_contacts`).
@@ -81,8 +81,9 @@ pub struct Record {
     pub add: [f64; 3],
 }
 
-/// Elements per chunk of the motion stage (`integrate::CHUNK`), by which records are filed.
-const MOTION_CHUNK: usize = super::integrate::CHUNK;
+/// Elements per chunk of the motion stage (fixed, for deterministic partial sums), by which
+/// records are filed.
+pub const MOTION_CHUNK: usize = 1024;
 
 /// One piece's records, filed by the motion stage's chunk of their element, each chunk's in
 /// contact order (scratch space, kept from step to step).

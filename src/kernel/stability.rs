@@ -28,7 +28,8 @@
 use nalgebra::{DMatrix, Matrix6, SymmetricEigen};
 
 use super::Body;
-use super::contacts::{Bond, Contact, Contacts};
+use super::contact::{Bond, Contact};
+use super::contacts::Contacts;
 use super::law::{ContactClass, Extra, Springs};
 use super::state::Elements;
 use crate::material::Arrangement;

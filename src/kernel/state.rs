@@ -11,7 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::contacts::Contacts;
-use super::energy::Ledger;
+use super::ledger::Ledger;
 
 /// Per-element constants. Index `e` addresses the same element in every array.
 #[derive(Debug, Clone, Default, PartialEq, Serialize, Deserialize)]

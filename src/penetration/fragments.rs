@@ -3,7 +3,7 @@
 //! supported element or elements that started on a face.
 
 use crate::kernel::Model;
-use crate::kernel::contacts::Bond;
+use crate::kernel::contact::Bond;
 
 /// Union-find with path halving and union by size.
 #[derive(Debug, Clone, Default)]

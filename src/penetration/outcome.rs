@@ -50,7 +50,7 @@ use serde::{Deserialize, Serialize};
 use crate::penetration::scene::{Layout, OutcomeSpec};
 use crate::error::{Error, Result};
 use crate::kernel::Model;
-use crate::kernel::contacts::Bond;
+use crate::kernel::contact::Bond;
 use crate::run::StopRule;
 use crate::units::{M_PER_IN, fps_to_mps, kg_to_lb, mps_to_fps};
 

@@ -18,7 +18,7 @@ use std::path::{Path, PathBuf};
 use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
 use crate::kernel::Model;
-use crate::kernel::contacts::Bond;
+use crate::kernel::contact::Bond;
 use crate::table::write_atomic;
 
 pub use frame::{View, render_png};

@@ -24,7 +24,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::{ContactClass, Dissipation, Kinematics, PartSet, Springs, damping, force, normal, tangential};
-use crate::kernel::contacts::{Contact, ContactForce};
+use crate::kernel::contact::{Contact, ContactForce};
 use crate::kernel::lanes::{Mask, Real};
 use crate::material::Material;
 

@@ -24,7 +24,7 @@ pub mod tangential;
 
 use serde::{Deserialize, Serialize};
 
-use super::contacts::{Bond, Contact, ContactForce};
+use super::contact::{Bond, Contact, ContactForce};
 use super::lanes::Real;
 use crate::error::Result;
 use crate::material::{Arrangement, FailureCriterion, Material, Plane, Strength};
