@@ -217,7 +217,7 @@ fn time_steps(model: &mut Model, steps: u64) -> Result<(f64, f64, u64, u64)> {
 /// two-thread speed-up of the impact moved between 0.85× and 1.34× from one spell to the next.
 pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: usize, threads: &[usize]) -> Result<Vec<Figures>> {
     let pools: Vec<rayon::ThreadPool> = threads.iter().map(|&t| rayon::ThreadPoolBuilder::new().num_threads(t).build().expect("thread pool")).collect();
-    let timed = |pool: &rayon::ThreadPool, model: &mut Model, n: u64| pool.install(|| crate::kernel::awake::while_running(|| time_steps(model, n)));
+    let timed = |pool: &rayon::ThreadPool, model: &mut Model, n: u64| pool.install(|| crate::kernel::exec::awake::while_running(|| time_steps(model, n)));
     // The block: one model per pool, warmed (caches, allocator) and then kept vibrating; the
     // impact: a fresh copy for every repeat, since it changes as it runs.
     let (mut kept, fresh, n) = match w {

@@ -362,7 +362,7 @@ impl ModelBuilder {
             threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
             record_contact_forces: false,
-            scatter_piece_contacts: super::pieces::PIECE,
+            scatter_piece_contacts: super::exec::pieces::PIECE,
             four_lanes: true,
             lane_width: super::lanes::widest(),
             rate_field,

@@ -34,7 +34,7 @@ pub struct Contacts {
     pub piece_spans: Vec<usize>,
     /// Scratch of the plan.
     #[serde(skip)]
-    plan_scratch: super::pieces::PlanScratch,
+    plan_scratch: super::exec::pieces::PlanScratch,
     /// The threads and the longest piece, contacts, the cuts are made for (None: no plan).
     #[serde(skip)]
     pub piece_rule: Option<(usize, usize)>,
@@ -93,8 +93,8 @@ impl Contacts {
 
     fn plan(&mut self, n_elements: usize, pool: bool) {
         let (threads, most) = self.piece_rule.expect("a rule to plan by");
-        super::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
-        super::pieces::plan(&self.list, &self.piece_cuts, n_elements, pool, &mut self.plan_scratch, &mut self.piece_ranges);
+        super::exec::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
+        super::exec::pieces::plan(&self.list, &self.piece_cuts, n_elements, pool, &mut self.plan_scratch, &mut self.piece_ranges);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's

@@ -16,7 +16,7 @@ use super::state::Elements;
 
 /// Elements per chunk (fixed, for deterministic partial sums; the schedule files its records
 /// by it).
-pub const CHUNK: usize = super::pieces::MOTION_CHUNK;
+pub const CHUNK: usize = super::exec::pieces::MOTION_CHUNK;
 
 /// Parameters of the motion stage.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -134,9 +134,9 @@ fn total_force<const EXTERNAL: bool>(summed: [f64; 3], mass_kg: f64, load: u16, 
 /// them: the stored forces added to their elements in contact order from zero, as the contact
 /// stage's scatter adds them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    use super::forces::Sums;
+    use super::exec::scatter::Sums;
     let mut sums = vec![[0.0; 3]; el.len()];
-    let mut out = super::forces::Serial::new(&mut sums);
+    let mut out = super::exec::scatter::Serial::new(&mut sums);
     for (c, f) in contacts.list.iter().zip(&contacts.force) {
         out.add(c, f);
     }
@@ -173,7 +173,7 @@ pub struct Motion<'a> {
     pub sums: &'a mut [[f64; 3]],
     /// On the pool: the records of stage 1's pieces, still to be added to `sums`, each chunk's
     /// just before it is moved (`pieces::fix_up_chunk`). Empty on one thread.
-    pub records: &'a [super::pieces::Kept],
+    pub records: &'a [super::exec::pieces::Kept],
     /// Positions at the last neighbour update, m.
     pub rebuild_pos: &'a [[f64; 2]],
     /// Neighbour margins, m.
@@ -366,7 +366,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
     let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]], ss: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
         if !records.is_empty() {
-            super::pieces::fix_up_chunk(ss, k, records);
+            super::exec::pieces::fix_up_chunk(ss, k, records);
         }
         // The chunk's slices of every per-element array, all of its length: no bounds checks
         // in the loop.
@@ -479,7 +479,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
     type Chunk<'r> = (usize, ((((Rows<'r>, Rows<'r>), Rows<'r>), &'r mut MotionReport), Rows<'r>));
     let one = |(k, ((((ps, vs), fs), out), ss)): Chunk<'_>| *out = run(k, ps, vs, fs, ss);
     match spans {
-        Some(starts) => super::spans::run(chunks.collect(), starts, one),
+        Some(starts) => super::exec::spans::run(chunks.collect(), starts, one),
         None => chunks.for_each(one),
     }
 }

@@ -11,13 +11,13 @@
 //! constants, contact classes, the enabled law parts, boundary groups, the time step), the
 //! [`State`] that stepping changes (what a checkpoint holds), and scratch buffers.
 
-pub(crate) mod awake;
 pub mod boundary;
 pub mod build;
 pub mod checkpoint;
 pub mod contact;
 pub mod contacts;
 pub mod energy;
+pub mod exec;
 pub mod forces;
 pub mod geometry;
 pub mod groups;
@@ -26,8 +26,6 @@ pub mod lanes;
 pub mod law;
 pub mod ledger;
 pub mod neighbours;
-pub mod pieces;
-pub mod spans;
 pub mod stability;
 pub mod state;
 
@@ -105,7 +103,7 @@ struct Scratch {
     contact_sums: Vec<[f64; 3]>,
     /// The pieces' records of the scatter on the pool (`pieces`): made by the contact stage,
     /// added to `contact_sums` by the motion stage.
-    records: Vec<pieces::Kept>,
+    records: Vec<exec::pieces::Kept>,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
     /// The motion stage's spans of chunks on the pool (`integrate::Motion::spans`).
@@ -148,7 +146,7 @@ pub struct Model {
     pub record_contact_forces: bool,
     /// Contacts per piece of the contact stage's scatter on the pool at most (`pieces`; a
     /// multiple of `forces::CHUNK`; only the front pieces of each thread's span are this long,
-    /// the others shrink to two chunks at its back, see `pieces::cuts`). The bits do not depend
+    /// the others shrink to two chunks at its back, see `exec::pieces::cuts`). The bits do not depend
     /// on it; smaller pieces balance the threads better and send more contributions through the
     /// serial fix-up.
     pub scatter_piece_contacts: usize,
@@ -209,7 +207,7 @@ impl Model {
     /// lender's cores — the other workers have other work.)
     pub fn run_steps(&mut self, n: u64) -> Result<()> {
         if n > 1 && self.parallel() && rayon::current_thread_index().is_none() {
-            return awake::while_running(|| self.steps_here(n));
+            return exec::awake::while_running(|| self.steps_here(n));
         }
         self.steps_here(n)
     }

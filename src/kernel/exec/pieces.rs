@@ -16,13 +16,13 @@
 //! Why not a gather: summing each element's forces over its adjacency after the stage reads
 //! every force twice through a scattered index, which cost more than the scatter saves.
 
-use super::contact::{Contact, ContactForce};
-use super::forces::Sums;
+use crate::kernel::contact::{Contact, ContactForce};
+use super::scatter::Sums;
 
 /// Contacts per piece at most by default: 32 chunks (see `Model::scatter_piece_contacts`).
 /// Only the first pieces of a span are this long, and they are its own thread's: fewer pieces,
 /// fewer contributions through the records.
-pub const PIECE: usize = 32 * super::forces::CHUNK;
+pub const PIECE: usize = 32 * super::scatter::CHUNK;
 
 /// The pieces for `contacts` contacts on `threads` threads, pieces of `most` contacts at most
 /// (at least one chunk). The list is cut into one span of about equal chunks per thread, each
@@ -38,7 +38,7 @@ pub const PIECE: usize = 32 * super::forces::CHUNK;
 /// `cuts[p]..cuts[p + 1]`; `spans` gets each span's first piece and then the number of pieces.
 /// Every piece is whole chunks (the last may end the list).
 pub fn cuts(contacts: usize, threads: usize, most: usize, cuts: &mut Vec<usize>, spans: &mut Vec<usize>) {
-    let chunk = super::forces::CHUNK;
+    let chunk = super::scatter::CHUNK;
     let most = (most / chunk).max(1);
     let chunks = contacts.div_ceil(chunk);
     let n_spans = threads.clamp(1, chunks.max(1));
@@ -190,7 +190,7 @@ pub fn split<T>(mut all: &mut [T], ranges: impl Iterator<Item = std::ops::Range<
 }
 
 /// The pieces of [`cuts`] as ranges, each scaled down by `per` (contacts per item: 1 for the
-/// contacts, `forces::CHUNK` for the per-chunk dissipation), the last rounded up.
+/// contacts, `scatter::CHUNK` for the per-chunk dissipation), the last rounded up.
 pub fn ranges(cuts: &[usize], per: usize) -> impl Iterator<Item = std::ops::Range<usize>> + '_ {
     cuts.windows(2).map(move |w| w[0] / per..w[1].div_ceil(per))
 }
@@ -307,7 +307,7 @@ mod tests {
     fn kept_len(k: &Kept) -> usize {
         k.by_chunk.iter().map(Vec::len).sum()
     }
-    use crate::kernel::forces::Serial;
+    use super::super::scatter::Serial;
 
     /// Forces with a wide spread of magnitudes, so that any change of summation order shows in
     /// the bits.
@@ -436,7 +436,7 @@ mod tests {
 
     /// Piece lengths in chunks, span by span.
     fn chunks_of(contacts: usize, threads: usize, most: usize) -> Vec<Vec<usize>> {
-        let chunk = crate::kernel::forces::CHUNK;
+        let chunk = super::super::scatter::CHUNK;
         let (mut c, mut s) = (Vec::new(), Vec::new());
         cuts(contacts, threads, most, &mut c, &mut s);
         assert_eq!((c[0], *c.last().unwrap()), (0, contacts), "the cuts must span the list");
@@ -449,7 +449,7 @@ mod tests {
 
     #[test]
     fn a_span_per_thread_of_whole_chunks_shrinking_to_two_and_never_above_half_again_the_cap() {
-        let chunk = crate::kernel::forces::CHUNK;
+        let chunk = super::super::scatter::CHUNK;
         // The level-2 event on two threads: 166 243 contacts, 82 chunks, two spans of 41.
         assert_eq!(chunks_of(166_243, 2, PIECE), vec![vec![27, 8, 4, 2]; 2]);
         // Under a cap of 16 chunks, as before.
