@@ -101,12 +101,12 @@ impl Model {
         if header.fingerprint != self.fingerprint() {
             return Err(bad("written for a different scene (elements, materials, laws, boundary groups or time step differ)".into()));
         }
-        let (mut state, rest) = postcard::take_from_bytes::<State>(rest).map_err(decode_error)?;
+        let (state, rest) = postcard::take_from_bytes::<State>(rest).map_err(decode_error)?;
         if !rest.is_empty() {
             return Err(bad(format!("{} bytes after the end of the state", rest.len())));
         }
         self.check(&state)?;
-        state.contacts.replan(self.el.len());
+        self.scratch.plan.forget();
         self.state = state;
         Ok(())
     }

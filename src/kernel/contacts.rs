@@ -1,7 +1,6 @@
 //! Contact arrays: one entry per pair that is bonded or may touch before the next neighbour
-//! rebuild, sorted by (i, j); the optional parts' state beside it; the per-contact force
-//! output; and the plan by which the contact stage on the pool scatters the forces in contact
-//! order (`pieces`).
+//! rebuild, sorted by (i, j); the optional parts' state beside it; and the per-contact force
+//! output. How the contact stage runs over them on the pool is `exec::pieces::Plan`'s.
 
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -10,7 +9,7 @@ use super::law::{Dissipation, Extra};
 
 use super::contact::{Bond, Contact, ContactForce};
 
-/// The contact list with its optional state, its forces and the plan of the pool's scatter.
+/// The contact list with its optional state and its forces.
 #[derive(Debug, Clone, Default, Serialize, Deserialize)]
 pub struct Contacts {
     /// Contacts sorted by (i, j).
@@ -21,23 +20,6 @@ pub struct Contacts {
     /// `Model::record_contact_forces` (else never written: zero), and zeroed at a merge then
     /// (`Model::merge`), until the next step writes them.
     pub force: Vec<ContactForce>,
-    /// Per piece of the list cut at `piece_cuts`, the elements it scatters into directly: the
-    /// plan of the contact stage's scatter on the pool (`pieces::plan`; derived from `list`,
-    /// made by [`Contacts::plan_pieces`] and kept up with the list from then on).
-    #[serde(skip)]
-    pub piece_ranges: Vec<std::ops::Range<u32>>,
-    /// Where the list is cut into pieces (`pieces::cuts`): piece p is `piece_cuts[p]..piece_cuts[p + 1]`.
-    #[serde(skip)]
-    pub piece_cuts: Vec<usize>,
-    /// The pieces' spans, one per thread: span s is pieces `piece_spans[s]..piece_spans[s + 1]`.
-    #[serde(skip)]
-    pub piece_spans: Vec<usize>,
-    /// Scratch of the plan.
-    #[serde(skip)]
-    plan_scratch: super::exec::pieces::PlanScratch,
-    /// The threads and the longest piece, contacts, the cuts are made for (None: no plan).
-    #[serde(skip)]
-    pub piece_rule: Option<(usize, usize)>,
     #[serde(skip)]
     merged: Vec<Contact>,
     #[serde(skip)]
@@ -66,35 +48,9 @@ impl Contacts {
     }
 
     /// After the list changed: the forces sized to it (new entries zero; the others are left
-    /// as they are, since a run that does not record them never writes them — zeroing every
-    /// entry at every merge was 0.4 % of the level-2 penetration event), and the plan of the
-    /// scatter, if one is kept, made again (with `pool`, on rayon's pool).
-    pub fn refresh(&mut self, n_elements: usize, pool: bool) {
+    /// as they are, since a run that does not record them never writes them).
+    pub fn refresh(&mut self) {
         self.force.resize(self.list.len(), ContactForce::default());
-        if self.piece_rule.is_some() {
-            self.plan(n_elements, pool);
-        }
-    }
-
-    /// The plan of the scatter made again, if one is kept (the forces are kept: a restored
-    /// checkpoint).
-    pub fn replan(&mut self, n_elements: usize) {
-        if self.piece_rule.is_some() {
-            self.plan(n_elements, false);
-        }
-    }
-
-    /// Plan the scatter on `threads` threads of rayon's pool in pieces of `most` contacts at
-    /// most (kept up with the list from now on, by every [`Contacts::refresh`]).
-    pub fn plan_pieces(&mut self, threads: usize, most: usize, n_elements: usize) {
-        self.piece_rule = Some((threads, most));
-        self.plan(n_elements, true);
-    }
-
-    fn plan(&mut self, n_elements: usize, pool: bool) {
-        let (threads, most) = self.piece_rule.expect("a rule to plan by");
-        super::exec::pieces::cuts(self.list.len(), threads, most, &mut self.piece_cuts, &mut self.piece_spans);
-        super::exec::pieces::plan(&self.list, &self.piece_cuts, n_elements, pool, &mut self.plan_scratch, &mut self.piece_ranges);
     }
 
     /// Replace the list by the union of the contacts worth keeping and the broad phase's
@@ -125,7 +81,6 @@ impl Contacts {
         admit: impl Fn(u32, u32) -> bool + Sync,
         release_j: impl Fn(&Contact) -> f64 + Sync,
         released: &mut Dissipation,
-        n_elements: usize,
         pool: bool,
     ) {
         let Contacts { list: old, extra, merged, merged_extra, parts, .. } = self;
@@ -179,7 +134,7 @@ impl Contacts {
         }
         std::mem::swap(&mut self.list, &mut self.merged);
         std::mem::swap(&mut self.extra, &mut self.merged_extra);
-        self.refresh(n_elements, pool);
+        self.refresh();
     }
 }
 
@@ -280,7 +235,6 @@ mod tests {
             |_, _| true,
             |k| k.ut_m * 2.0,
             &mut released,
-            4,
             false,
         );
         let keys: Vec<_> = c.list.iter().map(|k| (k.i, k.j, k.class)).collect();
@@ -391,7 +345,7 @@ mod tests {
         let (list, xs) = merged_one_by_one(old, extra, pairs, covered, touching, fresh, fresh_extra, admit, release, &mut want);
         let mut c = Contacts::from_list(old.clone(), extra.clone());
         let mut got = Dissipation::default();
-        c.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut got, movers.len(), pool);
+        c.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut got, pool);
         assert!(c.list == list, "{what}: the lists differ");
         assert!(c.extra == xs, "{what}: the extra slots differ");
         assert_eq!(got.friction_j.to_bits(), want.friction_j.to_bits(), "{what}: the released energy differs");

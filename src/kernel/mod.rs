@@ -104,6 +104,8 @@ struct Scratch {
     /// The pieces' records of the scatter on the pool (`pieces`): made by the contact stage,
     /// added to `contact_sums` by the motion stage.
     records: Vec<exec::pieces::Kept>,
+    /// The contact stage's plan on the pool, kept up with the contact list.
+    plan: exec::pieces::Plan,
     movers: Vec<u32>,
     is_mover: Vec<bool>,
     /// The motion stage's spans of chunks on the pool (`integrate::Motion::spans`).
@@ -238,13 +240,13 @@ impl Model {
         // On the pool: the plan made again if the pool or the cap changed (one thread needs
         // none).
         let rule = (rayon::current_num_threads(), self.scatter_piece_contacts);
-        if parallel && st.contacts.piece_rule != Some(rule) {
-            st.contacts.plan_pieces(rule.0, rule.1, n);
+        if parallel {
+            s.plan.ensure(rule.0, rule.1, &st.contacts.list, n);
         }
-        let contacts::Contacts { list, extra, force, piece_ranges, piece_cuts, piece_spans, .. } = &mut st.contacts;
+        let contacts::Contacts { list, extra, force, .. } = &mut st.contacts;
         let sums = &mut s.contact_sums[..];
         let out = if parallel {
-            forces::Out::Pieces(forces::Pieces { sums, ranges: piece_ranges, cuts: piece_cuts, spans: piece_spans, records: &mut s.records })
+            forces::Out::Pieces(forces::Pieces { sums, ranges: &s.plan.ranges, cuts: &s.plan.cuts, spans: &s.plan.spans, records: &mut s.records })
         } else {
             forces::Out::Serial(sums)
         };
@@ -283,12 +285,12 @@ impl Model {
         // still evens out the rest (`spans`).
         let spans = parallel.then(|| {
             // Span s's elements begin where its first piece's range does.
-            let c = &st.contacts;
+            let plan = &s.plan;
             let chunk_of = |e: u32| ((e as usize + integrate::CHUNK / 2) / integrate::CHUNK).min(n_chunks);
-            let later_spans = c.piece_spans.iter().take(c.piece_spans.len().saturating_sub(1)).skip(1);
+            let later_spans = plan.spans.iter().take(plan.spans.len().saturating_sub(1)).skip(1);
             s.motion_spans.clear();
             s.motion_spans.push(0);
-            s.motion_spans.extend(later_spans.map(|&p| chunk_of(c.piece_ranges[p].start)));
+            s.motion_spans.extend(later_spans.map(|&p| chunk_of(plan.ranges[p].start)));
             s.motion_spans.push(n_chunks);
             &s.motion_spans[..]
         });
@@ -463,7 +465,7 @@ impl Model {
         s.broad.requery(&s.movers, &s.is_mover, |e| refs[e], r, |e| margin[e], widest, pool, &mut s.pairs);
         let is_mover = &s.is_mover;
         let covered = |i: u32, j: u32| is_mover[i as usize] || is_mover[j as usize];
-        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, self.record_contact_forces, pool, &mut st.contacts, &mut st.ledger);
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, covered, self.record_contact_forces, pool, &mut st.contacts, &mut s.plan, &mut st.ledger);
         st.local_updates += 1;
     }
 
@@ -475,7 +477,7 @@ impl Model {
         let (pos, margin) = (&st.pos, &st.margin_m);
         let usual = self.neighbours.usual_reach_m(self.el.radius.iter().copied().fold(0.0, f64::max));
         s.broad.pairs(|e| [pos[e][0], pos[e][1]], &self.el.radius, |e| margin[e], Some(usual), pool, &mut s.pairs);
-        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, self.record_contact_forces, pool, &mut st.contacts, &mut st.ledger);
+        Self::merge(&self.el, &self.classes, self.kinds, &st.pos, &s.pairs, |_, _| true, self.record_contact_forces, pool, &mut st.contacts, &mut s.plan, &mut st.ledger);
         st.rebuild_pos.clear();
         st.rebuild_pos.extend(st.pos.iter().map(|p| [p[0], p[1]]));
         st.rebuilds += 1;
@@ -528,6 +530,7 @@ impl Model {
         record: bool,
         pool: bool,
         contacts: &mut contacts::Contacts,
+        plan: &mut exec::pieces::Plan,
         ledger: &mut ledger::Ledger,
     ) {
         let touching = |c: &contact::Contact| {
@@ -543,7 +546,8 @@ impl Model {
         let admit = |i: u32, j: u32| el.can_interact(i as usize, j as usize);
         let release = |c: &contact::Contact| 0.5 * classes[c.class as usize].contact.springs.kt_n_per_m * c.ut_m * c.ut_m;
         let mut released = Dissipation::default();
-        contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, el.len(), pool);
+        contacts.merge_candidates(pairs, covered, touching, fresh, fresh_extra, admit, release, &mut released, pool);
+        plan.follow(&contacts.list, el.len(), pool);
         if record {
             contacts.force.fill(contact::ContactForce::default());
         }

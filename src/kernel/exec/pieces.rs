@@ -111,6 +111,53 @@ impl Kept {
     }
 }
 
+/// The contact stage's plan on the pool: where the list is cut into pieces, each piece's
+/// elements it adds into directly, and the pieces' spans, one per thread. Derived from the
+/// contact list and remade whenever the list, the pool or the cap changes; the contact list
+/// itself knows nothing of it.
+#[derive(Debug, Clone, Default)]
+pub struct Plan {
+    /// Per piece, the elements it scatters into directly ([`plan`]).
+    pub ranges: Vec<std::ops::Range<u32>>,
+    /// Where the list is cut ([`cuts`]): piece p is `cuts[p]..cuts[p + 1]`.
+    pub cuts: Vec<usize>,
+    /// The pieces' spans: span s is pieces `spans[s]..spans[s + 1]`.
+    pub spans: Vec<usize>,
+    /// The threads and the longest piece, contacts, the plan is made for (None: no plan).
+    rule: Option<(usize, usize)>,
+    scratch: PlanScratch,
+}
+
+impl Plan {
+    /// A plan for `threads` threads and pieces of `most` contacts at most, made now unless the
+    /// present one already is (on rayon's pool).
+    pub fn ensure(&mut self, threads: usize, most: usize, list: &[Contact], n_elements: usize) {
+        if self.rule != Some((threads, most)) {
+            self.rule = Some((threads, most));
+            self.make(list, n_elements, true);
+        }
+    }
+
+    /// After the list changed: the plan made again, if one is kept (with `pool`, on rayon's
+    /// pool).
+    pub fn follow(&mut self, list: &[Contact], n_elements: usize, pool: bool) {
+        if self.rule.is_some() {
+            self.make(list, n_elements, pool);
+        }
+    }
+
+    /// Drop the plan (a restored state: the next step on the pool makes one).
+    pub fn forget(&mut self) {
+        self.rule = None;
+    }
+
+    fn make(&mut self, list: &[Contact], n_elements: usize, pool: bool) {
+        let (threads, most) = self.rule.expect("a rule to plan by");
+        cuts(list.len(), threads, most, &mut self.cuts, &mut self.spans);
+        plan(list, &self.cuts, n_elements, pool, &mut self.scratch, &mut self.ranges);
+    }
+}
+
 /// Scratch space of [`plan`]: each element's first piece, and the later half's on the pool.
 #[derive(Debug, Clone, Default)]
 pub struct PlanScratch {
