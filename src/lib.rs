@@ -29,5 +29,6 @@ pub mod run;
 pub mod scene;
 pub mod scene_file;
 pub mod shape;
+pub mod simulation;
 pub mod sweep;
 pub mod table;

@@ -12,8 +12,7 @@ use std::time::Instant;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::kernel::{Model, Threading};
-use crate::scene::Built;
+use crate::simulation::{Bodies, Built, Simulation, Threading};
 use crate::table::Table;
 
 /// The run's one-row summary: counts, time step, energies by mechanism, probe extremes, cost.
@@ -95,9 +94,9 @@ impl Columns {
     }
 }
 
-/// The outcome of one run.
+/// The outcome of one run of a model `M` (a kernel's, `crate::simulation`).
 #[derive(Debug, Clone)]
-pub struct RunResult {
+pub struct RunResult<M> {
     /// Scene name.
     pub name: String,
     /// Probe time series: `time_s` then one column per probe.
@@ -107,10 +106,10 @@ pub struct RunResult {
     /// Probe values as numbers, row-major like `series`.
     pub values: Vec<Vec<f64>>,
     /// The model at the end.
-    pub model: Model,
+    pub model: M,
 }
 
-impl RunResult {
+impl<M> RunResult<M> {
     /// The values of one series column (`time_s` or a probe name).
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
         let k = self.series.column(name)?;
@@ -132,15 +131,15 @@ fn fmt(v: f64) -> String {
 pub trait StopRule {
     /// Steps between looks.
     fn every_steps(&self) -> u64;
-    /// Look at the model: `Some(reason)` ends the run.
-    fn check(&mut self, model: &Model) -> Option<String>;
+    /// Look at the model's bodies: `Some(reason)` ends the run.
+    fn check(&mut self, model: &dyn Bodies) -> Option<String>;
     /// The rule's state as bytes.
     fn save(&self) -> Vec<u8>;
     /// Restore the state from [`StopRule::save`]'s bytes.
     fn load(&mut self, bytes: &[u8]) -> Result<()>;
 }
 
-/// Where a run stands: the model's state ([`crate::kernel::Model::checkpoint`]), the series
+/// Where a run stands: the model's state ([`Simulation::checkpoint`]), the series
 /// recorded so far, the stop rule's state and the initial counts the summary reports.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct RunCheckpoint {
@@ -193,7 +192,7 @@ pub struct Checkpointing<'a> {
 }
 
 /// Called with the model at each record; an error stops the run.
-pub type Observer<'a> = &'a mut dyn FnMut(&Model) -> Result<()>;
+pub type Observer<'a, M> = &'a mut dyn FnMut(&M) -> Result<()>;
 
 /// Cores a run may borrow while they are idle (a sweep's, `sweep::share`).
 pub trait Lend: Sync {
@@ -211,9 +210,8 @@ pub trait Lend: Sync {
 /// Steps between two looks at [`Lend::spare`] and [`Lend::wanted`] (an atomic load or two).
 pub const LEND_POLL_STEPS: u64 = 10;
 
-/// How to run.
-#[derive(Default)]
-pub struct Options<'a> {
+/// How to run a model `M`.
+pub struct Options<'a, M> {
     /// Where the steps run.
     pub threading: Threading,
     /// Idle cores to borrow: while one is spare the run steps on [`Lend::pool`] (the kernel's
@@ -228,23 +226,29 @@ pub struct Options<'a> {
     /// Called with the fraction of the duration done, at each record (progress display).
     pub tick: Option<&'a mut dyn FnMut(f64)>,
     /// Called with the model at each record (pictures); an error stops the run.
-    pub observe: Option<Observer<'a>>,
+    pub observe: Option<Observer<'a, M>>,
+}
+
+impl<M> Default for Options<'_, M> {
+    fn default() -> Self {
+        Options { threading: Threading::default(), lend: None, resume: None, checkpointing: None, stop: None, tick: None, observe: None }
+    }
 }
 
 /// Run to the scene's duration, recording probes every `every_steps` and at the end.
 /// `tick(fraction)` is called at each record (for progress display).
-pub fn run(built: Built, tick: &mut dyn FnMut(f64)) -> Result<RunResult> {
+pub fn run<M: Simulation>(built: Built<M>, tick: &mut dyn FnMut(f64)) -> Result<RunResult<M>> {
     run_with(built, Options { tick: Some(tick), ..Default::default() })
 }
 
 /// [`run`] with [`Options`]. A resumed run's series and summary are those of the run that
 /// never stopped, bit for bit, except the wall time and the speed, which count the resumed
 /// part only.
-pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
+pub fn run_with<M: Simulation>(mut built: Built<M>, mut opts: Options<'_, M>) -> Result<RunResult<M>> {
     let m = &mut built.model;
-    m.threading = opts.threading;
+    m.set_threading(opts.threading);
     let cap = (built.duration_s / m.dt_s()).ceil() as u64;
-    let record = |m: &Model, values: &mut Vec<Vec<f64>>| {
+    let record = |m: &M, values: &mut Vec<Vec<f64>>| {
         let mut row = vec![m.time_s()];
         row.extend(built.probes.iter().map(|p| p.value(m)));
         values.push(row);
@@ -267,7 +271,7 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         None => {
             let mut values = Vec::new();
             record(m, &mut values);
-            (m.intact_bonds() as u64, m.state.contacts.len() as u64, values)
+            (m.bond_count(), m.contact_count(), values)
         }
     };
     let start = Instant::now();
@@ -285,10 +289,10 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
                 return Err(Error::Abandoned { step: s });
             }
             borrowed = l.spare().then(|| l.pool());
-            m.threading = if borrowed.is_some() { Threading::Pool } else { own };
+            m.set_threading(if borrowed.is_some() { Threading::Pool } else { own });
         }
         // The steps up to the next one after which something is looked at, in one go: on the
-        // pool, one entry into it for all of them (`Model::run_steps`).
+        // pool, one entry into it for all of them (`Simulation::run_steps`).
         let next = [
             Some(cap),
             Some(built.every_steps),
@@ -306,7 +310,7 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         }
         s = next;
         let settled = match opts.stop.as_deref_mut() {
-            Some(stop) if s.is_multiple_of(stop.every_steps().max(1)) => stop.check(m),
+            Some(stop) if s.is_multiple_of(stop.every_steps().max(1)) => stop.check(&*m),
             _ => None,
         };
         let last = s == cap || settled.is_some();
@@ -335,48 +339,45 @@ pub fn run_with(mut built: Built, mut opts: Options<'_>) -> Result<RunResult> {
         }
     }
     // The model handed back steps where the caller said, not where the last borrow left it.
-    m.threading = own;
+    m.set_threading(own);
     let wall = start.elapsed().as_secs_f64();
     let mut header = vec!["time_s".to_string()];
-    header.extend(built.probes.iter().map(|p| p.name.clone()));
+    header.extend(built.probes.iter().map(|p| p.name().to_string()));
     let series = Table { header, rows: values.iter().map(|r| r.iter().map(|&v| fmt(v)).collect()).collect() };
-    let info = &m.step_info;
-    let l = &m.state.ledger;
-    let (ke, se) = (m.kinetic_energy_j(), m.strain_energy_j());
-    let residual = l.residual_j(ke, se);
+    let t = m.tally();
     let mut probes = Vec::new();
     for (k, p) in built.probes.iter().enumerate() {
         let col: Vec<f64> = values.iter().map(|r| r[k + 1]).collect();
         let (lo, hi) = col.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-        probes.push((format!("{}_final", p.name), *col.last().unwrap()));
-        probes.push((format!("{}_min", p.name), lo));
-        probes.push((format!("{}_max", p.name), hi));
+        probes.push((format!("{}_final", p.name()), *col.last().unwrap()));
+        probes.push((format!("{}_min", p.name()), lo));
+        probes.push((format!("{}_max", p.name()), hi));
     }
     let summary = RunSummary {
         scene: built.name.clone(),
-        elements: m.el.len() as u64,
+        elements: t.elements,
         contacts_initial: contacts0,
         bonds_initial: bonds0,
-        bonds_broken: l.bonds_broken(),
+        bonds_broken: t.bonds_broken,
         steps: m.steps(),
-        dt_s: info.dt_s,
-        dt_bound_s: info.dt_bound_s,
-        omega_bound_rad_per_s: info.omega_bound_rad_per_s,
-        dt_limit: info.detail.clone(),
+        dt_s: t.dt_s,
+        dt_bound_s: t.dt_bound_s,
+        omega_bound_rad_per_s: t.omega_bound_rad_per_s,
+        dt_limit: t.dt_limit,
         simulated_s: m.time_s(),
         end_reason,
-        kinetic_energy_j: ke,
-        strain_energy_j: se,
-        external_work_j: l.external_j,
-        mass_damping_j: l.mass_damping_j,
-        contacts: Columns(l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect()),
-        dissipated_j: l.dissipated_j(),
-        energy_residual_j: residual,
-        energy_error: residual / (l.initial_j + l.external_j.abs()).max(f64::MIN_POSITIVE),
-        neighbour_rebuilds: m.state.rebuilds,
-        neighbour_local_updates: m.state.local_updates,
+        kinetic_energy_j: t.kinetic_energy_j,
+        strain_energy_j: t.strain_energy_j,
+        external_work_j: t.external_work_j,
+        mass_damping_j: t.mass_damping_j,
+        contacts: Columns(t.contacts_j),
+        dissipated_j: t.dissipated_j,
+        energy_residual_j: t.energy_residual_j,
+        energy_error: t.energy_residual_j / t.energy_in_j.max(f64::MIN_POSITIVE),
+        neighbour_rebuilds: t.neighbour_rebuilds,
+        neighbour_local_updates: t.neighbour_local_updates,
         wall_s: (wall * 1e3).round() / 1e3,
-        element_steps_per_s: m.el.len() as f64 * (m.steps() - first_step) as f64 / wall.max(1e-9),
+        element_steps_per_s: t.elements as f64 * (m.steps() - first_step) as f64 / wall.max(1e-9),
         probes: Columns(probes),
     };
     Ok(RunResult { name: built.name, series, summary, values, model: built.model })

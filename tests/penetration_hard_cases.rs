@@ -24,7 +24,7 @@ fn scene(length_in: f64, depth_in: f64, v0_fps: f64) -> PenetrationScene {
     s
 }
 
-fn finite(f: &Finished) -> bool {
+fn finite(f: &Finished<demsweep::kernel::Model>) -> bool {
     f.model.state.pos.iter().chain(&f.model.state.vel).all(|v| v.iter().all(|x| x.is_finite()))
 }
 

@@ -8,6 +8,7 @@ use demsweep::Error;
 use demsweep::cases::cracked_plate::{self, Setup, Study};
 use demsweep::run::{self, Checkpointing, RunCheckpoint};
 use demsweep::scene::Scene;
+use demsweep::simulation::Bodies;
 use demsweep::table::Table;
 
 /// The coarse energy-criterion plate: the crack runs during the second half of the run.
@@ -44,7 +45,7 @@ fn a_resumed_run_writes_the_tables_of_an_uninterrupted_one() {
     let straight = run::run(plate().build().unwrap(), &mut |_| {}).unwrap();
     let checkpoint = killed_run(5000, 3);
     let resumed = run::run_with(plate().build().unwrap(), run::Options { resume: Some(&checkpoint), ..Default::default() }).unwrap();
-    let broken = |r: &run::RunResult| r.column("bonds_broken").unwrap();
+    let broken = |r: &run::RunResult<demsweep::kernel::Model>| r.column("bonds_broken").unwrap();
     let at_kill = broken(&straight)[checkpoint.values.len() - 1];
     assert!(at_kill > 0.0 && *broken(&straight).last().unwrap() > at_kill + 20.0, "the kill must fall while the crack runs");
     assert_eq!(resumed.series, straight.series);
@@ -99,9 +100,10 @@ fn demsweep_run_resume_continues_a_killed_run_and_removes_its_checkpoint() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// Ends the run once `bonds` bonds have broken; counts its looks (state it must carry across a
-/// resume).
+/// Ends the run once `bonds` of the model's `initial` bonds have broken; counts its looks (state
+/// it must carry across a resume).
 struct BrokenBonds {
+    initial: u64,
     bonds: u64,
     looks: u64,
 }
@@ -110,9 +112,11 @@ impl run::StopRule for BrokenBonds {
     fn every_steps(&self) -> u64 {
         50
     }
-    fn check(&mut self, m: &demsweep::kernel::Model) -> Option<String> {
+    fn check(&mut self, m: &dyn Bodies) -> Option<String> {
         self.looks += 1;
-        (m.state.ledger.bonds_broken() >= self.bonds).then(|| format!("settled after {} looks", self.looks))
+        let mut intact = 0;
+        m.each_bond(&mut |_, _| intact += 1);
+        (self.initial - intact >= self.bonds).then(|| format!("settled after {} looks", self.looks))
     }
     fn save(&self) -> Vec<u8> {
         self.looks.to_le_bytes().to_vec()
@@ -125,7 +129,7 @@ impl run::StopRule for BrokenBonds {
 
 #[test]
 fn a_stop_rule_ends_a_run_early_and_a_resumed_run_ends_the_same_way() {
-    let mut rule = BrokenBonds { bonds: 10, looks: 0 };
+    let mut rule = BrokenBonds { initial: plate_bonds(), bonds: 10, looks: 0 };
     let straight = run::run_with(plate().build().unwrap(), run::Options { stop: Some(&mut rule), ..Default::default() }).unwrap();
     let cap = (plate().scene.duration_s / straight.summary.dt_s).ceil() as u64;
     assert!(straight.summary.steps < cap && straight.summary.bonds_broken >= 10, "{:?}", straight.summary);
@@ -136,11 +140,11 @@ fn a_stop_rule_ends_a_run_early_and_a_resumed_run_ends_the_same_way() {
         saved.push(c.to_bytes());
         Err(Error::input("test", "killed"))
     };
-    let mut first = BrokenBonds { bonds: 10, looks: 0 };
+    let mut first = BrokenBonds { initial: plate_bonds(), bonds: 10, looks: 0 };
     let options = run::Options { stop: Some(&mut first), checkpointing: Some(Checkpointing { every_steps: 4000, save: &mut save }), ..Default::default() };
     assert!(run::run_with(plate().build().unwrap(), options).is_err());
     let checkpoint = RunCheckpoint::from_bytes(&saved[0]).unwrap();
-    let mut again = BrokenBonds { bonds: 10, looks: 0 };
+    let mut again = BrokenBonds { initial: plate_bonds(), bonds: 10, looks: 0 };
     let resumed =
         run::run_with(plate().build().unwrap(), run::Options { resume: Some(&checkpoint), stop: Some(&mut again), ..Default::default() }).unwrap();
     assert_eq!(resumed.series, straight.series);
@@ -150,15 +154,20 @@ fn a_stop_rule_ends_a_run_early_and_a_resumed_run_ends_the_same_way() {
     assert_eq!((full.summary.steps, full.summary.end_reason.as_str()), (cap, "duration"));
 }
 
-/// Never stops; notes the step of each look.
-struct Looks(Vec<u64>);
+/// The plate's bonds at the start.
+fn plate_bonds() -> u64 {
+    plate().build().unwrap().model.intact_bonds() as u64
+}
+
+/// Never stops; notes the step of each look (from the time, `.1` being the step).
+struct Looks(Vec<u64>, f64);
 
 impl run::StopRule for Looks {
     fn every_steps(&self) -> u64 {
         7
     }
-    fn check(&mut self, m: &demsweep::kernel::Model) -> Option<String> {
-        self.0.push(m.steps());
+    fn check(&mut self, m: &dyn Bodies) -> Option<String> {
+        self.0.push((m.time_s() / self.1).round() as u64);
         None
     }
     fn save(&self) -> Vec<u8> {
@@ -177,7 +186,7 @@ fn a_run_stepping_in_batches_looks_records_and_checkpoints_at_the_steps_it_would
     let cap = 100;
     built.every_steps = 5;
     built.duration_s = (cap as f64 - 0.5) * built.model.dt_s();
-    let mut looks = Looks(Vec::new());
+    let mut looks = Looks(Vec::new(), built.model.dt_s());
     let (mut recorded, mut saved) = (Vec::new(), Vec::new());
     let mut observe = |m: &demsweep::kernel::Model| {
         recorded.push(m.steps());

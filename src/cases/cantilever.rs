@@ -18,6 +18,7 @@ use crate::error::Result;
 use crate::kernel::boundary::Profile;
 use crate::lattice::Rect;
 use crate::material::{Arrangement, Material, Plane};
+use crate::kernel::Model;
 use crate::run::RunResult;
 use crate::scene::{Damping, DampingPoint, FixSpec, General, LoadSpec, OutputSpec, ProbeQuantity, ProbeSpec, Scene, TimeStep};
 
@@ -158,7 +159,7 @@ pub fn scene(level: u32) -> Result<Scene> {
 
 /// Run level k and return (steady tip amplitude m, the run). Probes are recorded about 400
 /// times per forcing period.
-pub fn run(level: u32) -> Result<(f64, RunResult)> {
+pub fn run(level: u32) -> Result<(f64, RunResult<Model>)> {
     let r = reference()?;
     let mut built = scene(level)?.build()?;
     let period = std::f64::consts::TAU / r.forcing_rad_per_s;
@@ -168,7 +169,7 @@ pub fn run(level: u32) -> Result<(f64, RunResult)> {
 }
 
 /// Fit the steady amplitude over the last [`FIT_PERIODS`] periods of `tip_uy_m`.
-pub fn steady_amplitude_m(result: &RunResult, omega_rad_per_s: f64) -> f64 {
+pub fn steady_amplitude_m(result: &RunResult<Model>, omega_rad_per_s: f64) -> f64 {
     let t = result.column("time_s").expect("time column");
     let u = result.column("tip_uy_m").expect("tip probe");
     let t_end = *t.last().unwrap();

@@ -50,6 +50,7 @@ use crate::error::Result;
 use crate::kernel::boundary::{Profile, Servo};
 use crate::lattice::Rect;
 use crate::material::{Arrangement, FailureCriterion, Material, Plane, PoissonPolicy};
+use crate::kernel::Model;
 use crate::run::RunResult;
 use crate::scene::{
     BodySpec, CrackSpec, Damping, Dof, FixSpec, General, LoadSpec, OutputSpec, ProbeQuantity, ProbeSpec,
@@ -342,7 +343,7 @@ pub fn net_width_m(study: Study, level: u32) -> f64 {
 }
 
 /// Peak grip force of a run, N.
-pub fn peak_force_n(result: &RunResult) -> f64 {
+pub fn peak_force_n(result: &RunResult<Model>) -> f64 {
     match result.column("grip_force_n") {
         Some(f) => f.iter().copied().fold(f64::NEG_INFINITY, f64::max),
         None => -result.column("grip_reaction_n").expect("grip probe").iter().copied().fold(f64::INFINITY, f64::min),
@@ -365,7 +366,7 @@ pub struct Peak {
 }
 
 /// Run one mesh.
-pub fn run(study: Study, level: u32, cracked: bool, setup: &Setup) -> Result<(Peak, RunResult)> {
+pub fn run(study: Study, level: u32, cracked: bool, setup: &Setup) -> Result<(Peak, RunResult<Model>)> {
     let built = scene(study, level, cracked, setup).build()?;
     let elements = built.model.el.len();
     let result = crate::run::run(built, &mut |_| {})?;

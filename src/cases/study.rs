@@ -29,13 +29,13 @@ pub struct Level {
 
 impl Level {
     /// From a finished run and its figure.
-    pub fn from_run(level: u32, elements: usize, value: f64, result: &RunResult, wall_s: f64) -> Level {
+    pub fn from_run<M>(level: u32, elements: usize, value: f64, result: &RunResult<M>, wall_s: f64) -> Level {
         Level { level, elements, steps: result.summary.steps, dt_s: result.summary.dt_s, value, wall_s }
     }
 }
 
 /// Time a closure returning (elements, figure, run).
-pub fn timed(level: u32, f: impl FnOnce() -> Result<(usize, f64, RunResult)>) -> Result<Level> {
+pub fn timed<M>(level: u32, f: impl FnOnce() -> Result<(usize, f64, RunResult<M>)>) -> Result<Level> {
     let t0 = Instant::now();
     let (n, v, r) = f()?;
     Ok(Level::from_run(level, n, v, &r, t0.elapsed().as_secs_f64()))

@@ -16,7 +16,7 @@ use super::state::Elements;
 
 /// Elements per chunk (fixed, for deterministic partial sums; the schedule files its records
 /// by it).
-pub const CHUNK: usize = super::exec::pieces::MOTION_CHUNK;
+pub const CHUNK: usize = super::exec::MOTION_CHUNK;
 
 /// Parameters of the motion stage.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -134,9 +134,9 @@ fn total_force<const EXTERNAL: bool>(summed: [f64; 3], mass_kg: f64, load: u16, 
 /// them: the stored forces added to their elements in contact order from zero, as the contact
 /// stage's scatter adds them.
 pub fn forces_now(el: &Elements, contacts: &Contacts, drive: Drive<'_>, gravity: [f64; 2]) -> Vec<[f64; 3]> {
-    use super::exec::scatter::Sums;
+    use super::exec::Sums;
     let mut sums = vec![[0.0; 3]; el.len()];
-    let mut out = super::exec::scatter::Serial::new(&mut sums);
+    let mut out = super::exec::Serial::new(&mut sums);
     for (c, f) in contacts.list.iter().zip(&contacts.force) {
         out.add(c, f);
     }
@@ -171,9 +171,9 @@ pub struct Motion<'a> {
     /// The contact forces summed per element by stage 1 (zeroed here as they are read, ready
     /// for the next step).
     pub sums: &'a mut [[f64; 3]],
-    /// On the pool: the records of stage 1's pieces, still to be added to `sums`, each chunk's
-    /// just before it is moved (`pieces::fix_up_chunk`). Empty on one thread.
-    pub records: &'a [super::exec::pieces::Kept],
+    /// What of stage 1's sums is still to be added, each chunk's just before it is moved
+    /// (none on one thread).
+    pub pending: super::exec::Pending<'a>,
     /// Positions at the last neighbour update, m.
     pub rebuild_pos: &'a [[f64; 2]],
     /// Neighbour margins, m.
@@ -359,15 +359,13 @@ fn cut<T>(a: &[T], base: usize, n: usize) -> &[T] {
 }
 
 fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: Motion<'_>) {
-    let Motion { el, pos, vel, force, sums, records, rebuild_pos, margin_m, drive, p, partial, spans, lane_width } = m;
+    let Motion { el, pos, vel, force, sums, pending, rebuild_pos, margin_m, drive, p, partial, spans, lane_width } = m;
     let half = 0.5 * p.alpha_per_s * p.dt_s;
     let (c1, c2, c3) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half), 2.0 * half / (1.0 + half));
     let limit2 = p.speed_limit_mps * p.speed_limit_mps;
     let run = |k: usize, ps: &mut [[f64; 3]], vs: &mut [[f64; 3]], fs: &mut [[f64; 3]], ss: &mut [[f64; 3]]| -> MotionReport {
         let mut r = MotionReport::default();
-        if !records.is_empty() {
-            super::exec::pieces::fix_up_chunk(ss, k, records);
-        }
+        pending.finish(ss, k);
         // The chunk's slices of every per-element array, all of its length: no bounds checks
         // in the loop.
         let (base, n) = (k * CHUNK, ps.len());
@@ -478,10 +476,7 @@ fn advance_with<const FRAME: bool, const DAMPED: bool, const EXTERNAL: bool>(m: 
     type Rows<'r> = &'r mut [[f64; 3]];
     type Chunk<'r> = (usize, ((((Rows<'r>, Rows<'r>), Rows<'r>), &'r mut MotionReport), Rows<'r>));
     let one = |(k, ((((ps, vs), fs), out), ss)): Chunk<'_>| *out = run(k, ps, vs, fs, ss);
-    match spans {
-        Some(starts) => super::exec::spans::run(chunks.collect(), starts, one),
-        None => chunks.for_each(one),
-    }
+    super::exec::each_chunk(chunks, spans, one);
 }
 
 #[cfg(test)]

@@ -27,6 +27,7 @@ pub mod law;
 pub mod ledger;
 pub mod neighbours;
 pub mod stability;
+pub mod contract;
 pub mod state;
 
 use std::ops::Range;
@@ -42,6 +43,7 @@ pub use state::{Elements, State};
 use crate::error::{Error, Result};
 
 pub use build::{ModelBuilder, StepChoice};
+pub use crate::simulation::Threading;
 
 /// Contacts below which a model steps on one thread (rayon's fork–join costs more than the
 /// work). Results do not depend on it: chunking, not threading, fixes the summation order.
@@ -76,16 +78,6 @@ pub struct Body {
     pub name: String,
     /// Its elements.
     pub elements: Range<usize>,
-}
-
-/// Where a model's steps run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
-pub enum Threading {
-    /// On the rayon pool the caller runs in, when the model is large enough (a lone run).
-    #[default]
-    Pool,
-    /// On the calling thread only (a run inside a sweep, which is itself one task of the pool).
-    Serial,
 }
 
 #[derive(Debug, Clone, Default)]
@@ -302,7 +294,7 @@ impl Model {
             force: &mut st.force,
             sums: &mut s.contact_sums[..],
             // Only the step's contact stage on the pool made records.
-            records: if parallel { &s.records[..] } else { &[] },
+            pending: if parallel { exec::Pending::of(&s.records) } else { exec::Pending::NONE },
             rebuild_pos: &st.rebuild_pos,
             margin_m: &st.margin_m,
             drive,

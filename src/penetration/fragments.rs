@@ -2,8 +2,7 @@
 //! what the outcome definitions need of each: mass, momentum, extent, and whether it holds a
 //! supported element or elements that started on a face.
 
-use crate::kernel::Model;
-use crate::kernel::contact::Bond;
+use crate::simulation::Bodies;
 
 /// Union-find with path halving and union by size.
 #[derive(Debug, Clone, Default)]
@@ -76,15 +75,14 @@ impl Fragment {
 /// The fragments of the elements `range` of `model` over its intact bonds; `face(e)` says
 /// whether element e started on the (back, front) face. Returns the fragments and, per element
 /// of the range, the index of its fragment.
-pub fn fragments(model: &Model, range: std::ops::Range<usize>, face: impl Fn(usize) -> (bool, bool)) -> (Vec<Fragment>, Vec<u32>) {
+pub fn fragments(model: &(impl Bodies + ?Sized), range: std::ops::Range<usize>, face: impl Fn(usize) -> (bool, bool)) -> (Vec<Fragment>, Vec<u32>) {
     let n = range.len();
     let mut uf = UnionFind::new(n);
-    for c in &model.state.contacts.list {
-        let (i, j) = (c.i as usize, c.j as usize);
-        if c.bond == Bond::Intact && range.contains(&i) && range.contains(&j) {
+    model.each_bond(&mut |i, j| {
+        if range.contains(&i) && range.contains(&j) {
             uf.union((i - range.start) as u32, (j - range.start) as u32);
         }
-    }
+    });
     let mut index = vec![u32::MAX; n];
     let mut out: Vec<Fragment> = Vec::new();
     for k in 0..n {
@@ -95,7 +93,7 @@ pub fn fragments(model: &Model, range: std::ops::Range<usize>, face: impl Fn(usi
         }
         let f = &mut out[index[root] as usize];
         let e = range.start + k;
-        let (m, p, v) = (model.el.mass[e], model.state.pos[e], model.state.vel[e]);
+        let (m, p, v) = (model.mass_kg(e), model.position_m(e), model.velocity_mps(e));
         let (back, front) = face(e);
         f.elements += 1;
         f.mass_kg += m;
@@ -103,7 +101,7 @@ pub fn fragments(model: &Model, range: std::ops::Range<usize>, face: impl Fn(usi
         f.momentum[1] += m * v[1];
         f.moment[0] += m * p[0];
         f.moment[1] += m * p[1];
-        f.supported |= model.el.is_fully_prescribed(e);
+        f.supported |= model.held(e);
         f.back |= back;
         f.front |= front;
     }

@@ -12,5 +12,5 @@ pub mod outcome;
 pub mod run;
 pub mod scene;
 
-pub use run::{Finished, Hooks, Row, run};
+pub use run::{Finished, Hooks, Row, run, run_on};
 pub use scene::PenetrationScene;

@@ -49,9 +49,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::penetration::scene::{Layout, OutcomeSpec};
 use crate::error::{Error, Result};
-use crate::kernel::Model;
-use crate::kernel::contact::Bond;
 use crate::run::StopRule;
+use crate::simulation::Bodies;
 use crate::units::{M_PER_IN, fps_to_mps, kg_to_lb, mps_to_fps};
 
 use super::fragments;
@@ -234,30 +233,29 @@ pub struct Detector {
 
 impl Detector {
     /// A detector for a model built from a penetration scene.
-    pub fn new(model: &Model, layout: Layout, spec: OutcomeSpec) -> Result<Detector> {
-        let body = |name: &str| model.body(name).map(|b| b.elements.clone()).ok_or_else(|| Error::input("body", format!("the model has no body {name:?}")));
+    pub fn new(model: &(impl Bodies + ?Sized), layout: Layout, spec: OutcomeSpec) -> Result<Detector> {
+        let body = |name: &str| model.body(name).ok_or_else(|| Error::input("body", format!("the model has no body {name:?}")));
         let (target, projectile) = (body("target")?, body("projectile")?);
         let d = 2.0 * layout.concrete_radius_m;
         let faces: Vec<(bool, bool)> = target.clone().map(|e| {
-            let y = model.el.initial[e][1];
-            (y - model.el.radius[e] < layout.back_y_m + d, y + model.el.radius[e] > layout.front_y_m - d)
+            let (y, r) = (model.initial_m(e)[1], model.radius_m(e));
+            (y - r < layout.back_y_m + d, y + r > layout.front_y_m - d)
         }).collect();
         let under = target
             .clone()
-            .filter(|&e| faces[e - target.start].0 && (model.el.initial[e][0] - layout.impact_x_m).abs() <= 0.5 * layout.projectile_width_m)
+            .filter(|&e| faces[e - target.start].0 && (model.initial_m(e)[0] - layout.impact_x_m).abs() <= 0.5 * layout.projectile_width_m)
             .collect();
         Ok(Detector { layout, spec, target, projectile, faces, under, tracking: Tracking::default() })
     }
 
     /// Look at the model.
-    pub fn look(&self, m: &Model) -> Look {
-        let (st, el) = (&m.state, &m.el);
+    pub fn look(&self, m: &(impl Bodies + ?Sized)) -> Look {
         let lay = &self.layout;
         // The projectile.
         let (mut mass, mut mom, mut lowest, mut rear) = (0.0, [0.0; 2], f64::INFINITY, f64::NEG_INFINITY);
         let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
         for e in self.projectile.clone() {
-            let (p, v, r, me) = (st.pos[e], st.vel[e], el.radius[e], el.mass[e]);
+            let (p, v, r, me) = (m.position_m(e), m.velocity_mps(e), m.radius_m(e), m.mass_kg(e));
             mass += me;
             mom = [mom[0] + me * v[0], mom[1] + me * v[1]];
             lowest = lowest.min(p[1] - r);
@@ -273,7 +271,7 @@ impl Detector {
         let deflection = if under.is_empty() {
             0.0
         } else {
-            -under.iter().map(|&e| m.displacement_m(e)[1]).sum::<f64>() / under.len() as f64
+            -under.iter().map(|&e| m.position_m(e)[1] - m.initial_m(e)[1]).sum::<f64>() / under.len() as f64
         };
         // The attached faces' mean vertical speed in bins one projectile width wide (zero where
         // nothing is attached), read over the three bins around a fragment.
@@ -286,9 +284,9 @@ impl Detector {
             if (b || f) && attached(e) {
                 for (face, on) in [(true, b), (false, f)] {
                     if on {
-                        let s = bins.entry((face, bin(st.pos[e][0]))).or_default();
+                        let s = bins.entry((face, bin(m.position_m(e)[0]))).or_default();
                         s.0 += 1;
-                        s.1 += st.vel[e][1];
+                        s.1 += m.velocity_mps(e)[1];
                     }
                 }
             }
@@ -307,19 +305,14 @@ impl Detector {
                 spall = (spall.0 + 1, spall.1 + f.mass_kg);
             }
         }
-        let attached_bonds = m
-            .state
-            .contacts
-            .list
-            .iter()
-            .filter(|c| c.bond == Bond::Intact && self.target.contains(&(c.i as usize)) && attached(c.i as usize))
-            .count() as u64;
+        let mut attached_bonds = 0u64;
+        m.each_bond(&mut |i, _| attached_bonds += u64::from(self.target.contains(&i) && attached(i)));
         // Wholly past the back face: below it and below any attached material under it.
         let mut local = lay.back_y_m;
         for e in self.target.clone() {
-            let p = st.pos[e];
-            if p[0] + el.radius[e] > xmin && p[0] - el.radius[e] < xmax && attached(e) {
-                local = local.min(p[1] - el.radius[e]);
+            let (p, r) = (m.position_m(e), m.radius_m(e));
+            if p[0] + r > xmin && p[0] - r < xmax && attached(e) {
+                local = local.min(p[1] - r);
             }
         }
         Look {
@@ -338,7 +331,7 @@ impl Detector {
     }
 
     /// The outcome, from the record and a last look at the model.
-    pub fn outcome(&self, m: &Model) -> Outcome {
+    pub fn outcome(&self, m: &(impl Bodies + ?Sized)) -> Outcome {
         let l = self.look(m);
         let t = &self.tracking;
         Outcome {
@@ -365,7 +358,7 @@ impl StopRule for Detector {
         self.spec.check_every_steps
     }
 
-    fn check(&mut self, model: &Model) -> Option<String> {
+    fn check(&mut self, model: &dyn Bodies) -> Option<String> {
         let l = self.look(model);
         let v0 = self.layout.v0_mps;
         self.tracking.observe(&l, &self.spec, v0).map(str::to_string)

@@ -1,13 +1,17 @@
 //! A penetration run: the scene of `penetration::scene`, run until its outcome is settled
-//! (`outcome::Detector` as the stop rule), reported as one typed row.
+//! (`outcome::Detector` as the stop rule), reported as one typed row. The only place that picks
+//! the kernel a penetration scene runs on ([`run`]); the rest ([`run_on`]) reads the model
+//! through `crate::simulation` and works for any kernel.
 
 use serde::Serialize;
 
 use crate::penetration::scene::PenetrationScene;
 use crate::error::Result;
-use crate::kernel::{Model, Threading};
+use crate::kernel::Model;
 use crate::penetration::outcome::{Detector, Outcome};
+use crate::penetration::scene::Layout;
 use crate::run::{self, RunSummary};
+use crate::simulation::{Built, Simulation, Threading};
 use crate::units::M_PER_IN;
 
 /// The summary row of a penetration run (`summary.csv`; what sweeps tabulate): the inputs a
@@ -30,36 +34,45 @@ pub struct Row {
     pub run: RunSummary,
 }
 
-/// A finished penetration run.
+/// A finished penetration run on a model `M`.
 #[derive(Debug, Clone)]
-pub struct Finished {
+pub struct Finished<M> {
     /// Its row.
     pub row: Row,
     /// The model at the end.
-    pub model: Model,
+    pub model: M,
     /// The detector with its record.
     pub detector: Detector,
 }
 
-/// Hooks a caller may give a run.
-#[derive(Default)]
-pub struct Hooks<'a> {
+/// Hooks a caller may give a run of a model `M`.
+pub struct Hooks<'a, M> {
     /// Where the steps run.
     pub threading: Threading,
     /// Idle cores to borrow (see [`run::Options::lend`]).
     pub lend: Option<&'a dyn run::Lend>,
     /// Called at every record with the model (pictures).
-    pub each_record: Option<run::Observer<'a>>,
+    pub each_record: Option<run::Observer<'a, M>>,
     /// Simulated time between records, s (0: only the start and the end).
     pub record_every_s: f64,
     /// Progress, the fraction of the time cap done.
     pub tick: Option<&'a mut dyn FnMut(f64)>,
 }
 
-/// Run the scene to its settled outcome.
-pub fn run(scene: &PenetrationScene, hooks: Hooks<'_>) -> Result<Finished> {
+impl<M> Default for Hooks<'_, M> {
+    fn default() -> Self {
+        Hooks { threading: Threading::default(), lend: None, each_record: None, record_every_s: 0.0, tick: None }
+    }
+}
+
+/// Run the scene to its settled outcome on the 2D kernel.
+pub fn run(scene: &PenetrationScene, hooks: Hooks<'_, Model>) -> Result<Finished<Model>> {
     let (kernel, layout) = scene.to_scene()?;
-    let mut built = kernel.build()?;
+    run_on(scene, kernel.build()?, layout, hooks)
+}
+
+/// Run `built`, the scene's model on some kernel laid out as `layout`, to its settled outcome.
+pub fn run_on<M: Simulation>(scene: &PenetrationScene, mut built: Built<M>, layout: Layout, hooks: Hooks<'_, M>) -> Result<Finished<M>> {
     built.every_steps = if hooks.record_every_s > 0.0 { ((hooks.record_every_s / built.model.dt_s()).round() as u64).max(1) } else { u64::MAX };
     let mut detector = Detector::new(&built.model, layout.clone(), scene.outcome.clone())?;
     let (mut on, mut tick) = (hooks.each_record, hooks.tick);
@@ -68,7 +81,7 @@ pub fn run(scene: &PenetrationScene, hooks: Hooks<'_>) -> Result<Finished> {
     }
     let result = {
         // Reborrowed for the run (the callbacks' trait objects shortened to the run's borrow).
-        let observe = on.as_mut().map(|f| &mut **f as run::Observer<'_>);
+        let observe = on.as_mut().map(|f| &mut **f as run::Observer<'_, M>);
         let tick = tick.as_mut().map(|f| &mut **f as &mut dyn FnMut(f64));
         let options = run::Options { threading: hooks.threading, lend: hooks.lend, stop: Some(&mut detector), tick, observe, ..Default::default() };
         run::run_with(built, options)?

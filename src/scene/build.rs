@@ -73,19 +73,17 @@ impl Probe {
     }
 }
 
-/// A built scene, ready to run.
-#[derive(Debug, Clone)]
-pub struct Built {
-    /// Scene name.
-    pub name: String,
-    /// The model.
-    pub model: Model,
-    /// Probes.
-    pub probes: Vec<Probe>,
-    /// Simulated time to run, s.
-    pub duration_s: f64,
-    /// Probe interval, steps.
-    pub every_steps: u64,
+/// A built scene of the 2D kernel, ready to run.
+pub type Built = crate::simulation::Built<Model>;
+
+impl crate::simulation::Measure<Model> for Probe {
+    fn name(&self) -> &str {
+        &self.name
+    }
+
+    fn value(&self, model: &Model) -> f64 {
+        Probe::value(self, model)
+    }
 }
 
 /// Rayleigh coefficients (α 1/s, β s) from one point (mass-proportional only) or two points.
@@ -191,6 +189,7 @@ impl Scene {
         b.collision_steps = ts.collision_steps;
         b.skin_ratio = ts.skin_ratio;
         let model = b.build()?;
+        let probes = probes.into_iter().map(|p| std::sync::Arc::new(p) as std::sync::Arc<dyn crate::simulation::Measure<Model>>).collect();
         Ok(Built { name: g.name.clone(), model, probes, duration_s: g.duration_s, every_steps: self.output.every_steps })
     }
 }

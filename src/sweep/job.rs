@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
-use crate::kernel::Threading;
+use crate::simulation::Threading;
 use crate::run::Lend;
 use crate::scene::overrides::Override;
 use crate::scene_file::{SceneFile, load_text};
