@@ -20,6 +20,7 @@ pub mod empirical;
 
 pub use error::{Error, Result};
 pub mod kernel;
+pub mod kernel3d;
 pub mod lattice;
 pub mod material;
 pub mod penetration;

@@ -256,40 +256,9 @@ impl Extra {
     }
 }
 
-macro_rules! dissipation {
-    ($($(#[$doc:meta])* $field:ident),* $(,)?) => {
-        /// Energy the contacts dissipated, J, by mechanism, and the bonds broken. Every
-        /// mechanism is listed once, here: [`Dissipation::terms`] gives them to the ledger, the
-        /// run summary and the checkpoint.
-        #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-        pub struct Dissipation {
-            $($(#[$doc])* pub $field: f64,)*
-            /// Bonds broken.
-            pub broken: u64,
-        }
-
-        impl Dissipation {
-            /// Add another step's or chunk's dissipation.
-            #[inline(always)]
-            pub fn add(&mut self, o: &Dissipation) {
-                $(self.$field += o.$field;)*
-                self.broken += o.broken;
-            }
-
-            /// (name, J) of every mechanism, in a fixed order.
-            pub fn terms(&self) -> Vec<(&'static str, f64)> {
-                vec![$((stringify!($field), self.$field)),*]
-            }
-
-            /// Everything dissipated, J.
-            pub fn total_j(&self) -> f64 {
-                0.0 $(+ self.$field)*
-            }
-        }
-    };
-}
-
-dissipation! {
+crate::kernel::ledger::mechanisms! {
+    /// Energy the 2D contacts dissipated, J, by mechanism, and the bonds broken.
+    Dissipation {
     /// Plastic work on the bond plateaus (normal and shear), J.
     plastic_work_j,
     /// Elastic energy released by bonds breaking, J.
@@ -302,6 +271,7 @@ dissipation! {
     compaction_work_j,
     /// Energy the rate-dependent modulus took out of (> 0) or put into the springs, J.
     rate_work_j,
+    }
 }
 
 /// Kinematics of a contact at the current configuration (of one contact, or of several in

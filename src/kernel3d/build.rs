@@ -1,0 +1,159 @@
+//! Building a 3D model: bodies of spheres, their bonds, supports and loads, the contact classes,
+//! and the time step from the stability bound.
+
+use std::ops::Range;
+
+use super::contact::{Bond, Contact};
+use super::law::Class;
+use super::stability::{Link, omega_max_sq};
+use super::state::{Spheres, State};
+use super::vec3::{V3, norm, scale, sub};
+use super::{Model, integrate};
+use crate::error::{Error, Result};
+use crate::kernel::Body;
+use crate::simulation::Threading;
+
+/// What a 3D model is built from.
+#[derive(Debug, Clone)]
+pub struct Builder {
+    spheres: Spheres,
+    bodies: Vec<Body>,
+    kinds: usize,
+    classes: Vec<Option<Class>>,
+    bonds: Vec<(u32, u32)>,
+    /// Mass-proportional damping α, 1/s.
+    pub alpha_per_s: f64,
+    /// Fraction of the stability limit taken as the step.
+    pub safety: f64,
+    /// Neighbour skin over the mean radius.
+    pub skin_ratio: f64,
+}
+
+impl Builder {
+    /// An empty model of `kinds` sphere kinds (materials).
+    pub fn new(kinds: usize) -> Builder {
+        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3 }
+    }
+
+    /// The class of contacts between kinds a and b (both orders).
+    pub fn class(&mut self, a: usize, b: usize, class: Class) {
+        self.classes[a * self.kinds + b] = Some(class.clone());
+        self.classes[b * self.kinds + a] = Some(class);
+    }
+
+    /// A body of spheres of `kind` at `centres_m` with `radii_m` and density `density_kg_m3`,
+    /// at rest. Returns its sphere range.
+    pub fn body(&mut self, name: &str, centres_m: &[V3], radii_m: &[f64], kind: u16, density_kg_m3: f64) -> Range<usize> {
+        let start = self.spheres.len();
+        let s = &mut self.spheres;
+        for (&c, &r) in centres_m.iter().zip(radii_m) {
+            let m = density_kg_m3 * 4.0 / 3.0 * std::f64::consts::PI * r * r * r;
+            s.radius_m.push(r);
+            s.mass_kg.push(m);
+            s.inertia_kg_m2.push(0.4 * m * r * r);
+            s.kind.push(kind);
+            s.initial_m.push(c);
+            s.held.push(false);
+            s.prescribed_mps.push([0.0; 3]);
+            s.load_n.push([0.0; 3]);
+            s.load_nm.push([0.0; 3]);
+        }
+        let range = start..self.spheres.len();
+        self.bodies.push(Body { name: name.to_string(), elements: range.clone() });
+        range
+    }
+
+    /// Bond spheres i and j at their present distance.
+    pub fn bond(&mut self, i: usize, j: usize) {
+        self.bonds.push((i.min(j) as u32, i.max(j) as u32));
+    }
+
+    /// Hold sphere e, moving at `velocity_mps` (zero: fixed), without spin.
+    pub fn hold(&mut self, e: usize, velocity_mps: V3) {
+        self.spheres.held[e] = true;
+        self.spheres.prescribed_mps[e] = velocity_mps;
+    }
+
+    /// A constant force (N) and moment (N·m) on sphere e.
+    pub fn load(&mut self, e: usize, force_n: V3, moment_nm: V3) {
+        self.spheres.load_n[e] = force_n;
+        self.spheres.load_nm[e] = moment_nm;
+    }
+
+    /// Set the mass and inertia of sphere e (kg, kg·m²): a beam of spheres carries the mass of
+    /// its cylinder, not of its balls.
+    pub fn mass(&mut self, e: usize, mass_kg: f64, inertia_kg_m2: f64) {
+        self.spheres.mass_kg[e] = mass_kg;
+        self.spheres.inertia_kg_m2[e] = inertia_kg_m2;
+    }
+
+    /// Build: bonds at their present lengths, the contacts the spheres start with, and the step.
+    pub fn build(self, initial_velocity_mps: &[(Range<usize>, V3)]) -> Result<Model> {
+        let kinds = self.kinds;
+        let classes: Vec<Class> = self
+            .classes
+            .into_iter()
+            .enumerate()
+            .map(|(k, c)| c.ok_or_else(|| Error::input("class", format!("no contact class between kinds {} and {}", k / kinds, k % kinds))))
+            .collect::<Result<_>>()?;
+        let s = self.spheres;
+        if let Some(e) = (0..s.len()).find(|&e| !(s.radius_m[e] > 0.0 && s.mass_kg[e] > 0.0 && s.initial_m[e].iter().all(|x| x.is_finite()))) {
+            return Err(Error::input("sphere", format!("sphere {e}: radius {} m, mass {} kg, centre {:?} m", s.radius_m[e], s.mass_kg[e], s.initial_m[e])));
+        }
+        let n = s.len();
+        let mean_r = s.radius_m.iter().sum::<f64>() / n.max(1) as f64;
+        let mut vel = vec![[0.0; 3]; n];
+        for (range, v) in initial_velocity_mps {
+            range.clone().for_each(|e| vel[e] = *v);
+        }
+        for e in (0..n).filter(|&e| s.held[e]) {
+            vel[e] = s.prescribed_mps[e];
+        }
+        let class_of = |i: u32, j: u32| (s.kind[i as usize] as usize * kinds + s.kind[j as usize] as usize) as u16;
+        let mut bonds = self.bonds;
+        bonds.sort_unstable();
+        bonds.dedup();
+        let pos = s.initial_m.clone();
+        let contacts: Vec<Contact> = bonds
+            .iter()
+            .map(|&(i, j)| {
+                let dx = sub(pos[j as usize], pos[i as usize]);
+                let d = norm(dx);
+                Contact::new(i, j, class_of(i, j), Bond::Intact, d, scale(1.0 / d, dx))
+            })
+            .collect();
+        let mut model = Model {
+            spheres: s,
+            classes,
+            kinds,
+            bodies: self.bodies,
+            motion: integrate::Params { dt_s: 0.0, alpha_per_s: self.alpha_per_s },
+            dt_bound_s: 0.0,
+            omega_bound_rad_per_s: 0.0,
+            skin_m: self.skin_ratio * mean_r,
+            threading: Threading::Serial,
+            state: State { pos_m: pos, vel_mps: vel, spin_rad_per_s: vec![[0.0; 3]; n], contacts, ..Default::default() },
+        };
+        model.search();
+        let links: Vec<Link<'_>> = model
+            .state
+            .contacts
+            .iter()
+            .map(|c| {
+                let (i, j) = (c.i as usize, c.j as usize);
+                let (ri, rj) = (model.spheres.radius_m[i], model.spheres.radius_m[j]);
+                Link { ends: [i, j], lever_m: [ri, rj], class: &model.classes[c.class as usize] }
+            })
+            .collect();
+        let sp = &model.spheres;
+        let omega = omega_max_sq(&sp.mass_kg, &sp.inertia_kg_m2, &sp.held, &links).sqrt();
+        if !(omega > 0.0 && omega.is_finite()) {
+            return Err(Error::input("class", format!("the contacts give no finite frequency bound ({omega} rad/s): no free sphere in a contact?")));
+        }
+        model.omega_bound_rad_per_s = omega;
+        model.dt_bound_s = 2.0 / omega;
+        model.motion.dt_s = self.safety * model.dt_bound_s;
+        model.state.ledger.initial_j = model.kinetic_energy_j() + model.strain_energy_j();
+        Ok(model)
+    }
+}

@@ -1,0 +1,46 @@
+//! One contact between two spheres: who, whether bonded, and its history (what evolves).
+
+use serde::{Deserialize, Serialize};
+
+use super::vec3::V3;
+pub use crate::kernel::contact::Bond;
+
+/// A contact's record. Everything here evolves except `i`, `j` and `class`.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Contact {
+    /// First sphere (i < j).
+    pub i: u32,
+    /// Second sphere.
+    pub j: u32,
+    /// Contact class (`class_index` of the two kinds).
+    pub class: u16,
+    /// Bonded, or frictional after failure or for a new contact.
+    pub bond: Bond,
+    /// Rest length d0, m (the centre distance when the bond formed; r_i + r_j for a new one).
+    pub rest_m: f64,
+    /// The unit normal from i to j at the last step (the frame the history lives in).
+    pub normal: V3,
+    /// Shear spring: the tangential force, N, in the plane normal to `normal`.
+    pub shear_n: V3,
+    /// Plastic opening of the bond's tensile plateau, m (seed 000 §5).
+    pub plastic_opening_m: f64,
+    /// The rolling moment k_r θ_r, N·m (seed 004 eq 15, capped by eq 16), in the contact plane.
+    pub rolling_nm: V3,
+    /// The twisting moment k_t ω_M about the normal, N·m (eq 24, capped by eq 25/42).
+    pub twisting_nm: f64,
+}
+
+impl Contact {
+    /// A fresh contact of `class` between i < j at rest length `rest_m` along `normal`.
+    pub fn new(i: u32, j: u32, class: u16, bond: Bond, rest_m: f64, normal: V3) -> Contact {
+        Contact { i, j, class, bond, rest_m, normal, shear_n: [0.0; 3], plastic_opening_m: 0.0, rolling_nm: [0.0; 3], twisting_nm: 0.0 }
+    }
+
+    /// Forget the history of a frictional contact that came apart.
+    pub fn forget(&mut self, radius_sum_m: f64) {
+        self.shear_n = [0.0; 3];
+        self.rolling_nm = [0.0; 3];
+        self.twisting_nm = 0.0;
+        self.rest_m = radius_sum_m;
+    }
+}

@@ -1,0 +1,109 @@
+//! The 3D kernel under the contract of `crate::simulation`.
+
+use std::ops::Range;
+
+use super::Model;
+use super::contact::Bond;
+use super::state::State;
+use crate::error::{Error, Result};
+use crate::simulation::{Bodies, Simulation, Tally, Threading};
+
+const MAGIC: [u8; 8] = *b"DEMS3D\x00\x01";
+
+impl Bodies for Model {
+    fn time_s(&self) -> f64 {
+        Model::time_s(self)
+    }
+    fn body(&self, name: &str) -> Option<Range<usize>> {
+        self.bodies.iter().find(|b| b.name == name).map(|b| b.elements.clone())
+    }
+    fn element_count(&self) -> usize {
+        self.spheres.len()
+    }
+    fn initial_m(&self, e: usize) -> [f64; 3] {
+        self.spheres.initial_m[e]
+    }
+    fn position_m(&self, e: usize) -> [f64; 3] {
+        self.state.pos_m[e]
+    }
+    fn velocity_mps(&self, e: usize) -> [f64; 3] {
+        self.state.vel_mps[e]
+    }
+    fn radius_m(&self, e: usize) -> f64 {
+        self.spheres.radius_m[e]
+    }
+    fn mass_kg(&self, e: usize) -> f64 {
+        self.spheres.mass_kg[e]
+    }
+    fn held(&self, e: usize) -> bool {
+        self.spheres.held[e]
+    }
+    fn each_bond(&self, f: &mut dyn FnMut(usize, usize)) {
+        for c in self.state.contacts.iter().filter(|c| c.bond == Bond::Intact) {
+            f(c.i as usize, c.j as usize);
+        }
+    }
+}
+
+impl Simulation for Model {
+    fn dt_s(&self) -> f64 {
+        self.motion.dt_s
+    }
+    fn steps(&self) -> u64 {
+        self.state.steps
+    }
+    fn run_steps(&mut self, n: u64) -> Result<()> {
+        Model::run_steps(self, n)
+    }
+    fn threading(&self) -> Threading {
+        self.threading
+    }
+    fn set_threading(&mut self, threading: Threading) {
+        self.threading = threading;
+    }
+    fn checkpoint(&self) -> Vec<u8> {
+        let mut out = MAGIC.to_vec();
+        out.extend(postcard::to_stdvec(&self.state).expect("the state serialises"));
+        out
+    }
+    fn restore(&mut self, bytes: &[u8]) -> Result<()> {
+        let bad = |m: String| Error::input("checkpoint", m);
+        if bytes.len() < MAGIC.len() || bytes[..MAGIC.len()] != MAGIC {
+            return Err(bad("not a demsweep 3D checkpoint (bad magic bytes)".into()));
+        }
+        let state: State = postcard::from_bytes(&bytes[MAGIC.len()..]).map_err(|e| bad(format!("damaged: {e}")))?;
+        if state.pos_m.len() != self.spheres.len() {
+            return Err(bad(format!("{} spheres in the checkpoint, {} in the scene", state.pos_m.len(), self.spheres.len())));
+        }
+        self.state = state;
+        Ok(())
+    }
+    fn contact_count(&self) -> u64 {
+        self.state.contacts.len() as u64
+    }
+    fn bond_count(&self) -> u64 {
+        self.intact_bonds() as u64
+    }
+    fn tally(&self) -> Tally {
+        let l = &self.state.ledger;
+        let (ke, se) = (self.kinetic_energy_j(), self.strain_energy_j());
+        Tally {
+            elements: self.spheres.len() as u64,
+            bonds_broken: l.bonds_broken(),
+            dt_s: self.motion.dt_s,
+            dt_bound_s: self.dt_bound_s,
+            omega_bound_rad_per_s: self.omega_bound_rad_per_s,
+            dt_limit: format!("{:.2} of the Gershgorin bound over the contacts", self.motion.dt_s / self.dt_bound_s),
+            kinetic_energy_j: ke,
+            strain_energy_j: se,
+            external_work_j: l.external_j,
+            mass_damping_j: l.mass_damping_j,
+            contacts_j: l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
+            dissipated_j: l.dissipated_j(),
+            energy_residual_j: l.residual_j(ke, se),
+            energy_in_j: l.initial_j + l.external_j.abs(),
+            neighbour_rebuilds: self.state.searches,
+            neighbour_local_updates: 0,
+        }
+    }
+}

@@ -1,0 +1,187 @@
+//! The 3D contact law, composed as the 2D one is: normal ⊕ shear ⊕ failure for a bond, normal ⊕
+//! Coulomb for a frictional contact, and the moment transfer law's rolling ⊕ twisting parts
+//! (seed 004) where a class turns them on. Where the physics is the 2D kernel's, so is the code:
+//! the bond's normal spring with its tensile plateau (`kernel::law::normal`), the failure rule
+//! (`kernel::law::failure`), Coulomb's limit (`kernel::law::friction::coulomb`) and the scalar
+//! return map (`kernel::law::tangential`, for the twist). What is 3D here: the shear spring and
+//! the rolling moment as vectors in the contact plane ([`capped`]), carried as the contact turns.
+
+pub mod capped;
+pub mod rolling;
+pub mod twisting;
+
+use serde::{Deserialize, Serialize};
+
+use super::contact::{Bond, Contact};
+use super::vec3::{V3, add, carried, cross, dot, in_plane, norm, scale, sub};
+use crate::kernel::law::{failure, friction, normal};
+
+/// Parameters of one kind of contact: configuration, fixed when the model is built.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Class {
+    /// Bond springs: normal k_n and shear k_s, N/m.
+    pub bond_kn_n_per_m: f64,
+    /// Bond shear stiffness, N/m.
+    pub bond_ks_n_per_m: f64,
+    /// Tensile plateau of a bond, N (σ_t × bond area; ∞: no yield).
+    pub bond_tension_n: f64,
+    /// Shear plateau of a bond, N (∞: none).
+    pub bond_shear_n: f64,
+    /// Plastic opening at which a bond breaks, m (0: at the plateau; ∞: never).
+    pub bond_opening_at_break_m: f64,
+    /// Frictional contacts: normal stiffness, N/m.
+    pub kn_n_per_m: f64,
+    /// Frictional contacts: shear stiffness, N/m.
+    pub ks_n_per_m: f64,
+    /// Coulomb coefficient μ.
+    pub mu: f64,
+    /// Rolling resistance (None: off).
+    pub rolling: Option<rolling::Params>,
+    /// Twisting resistance (None: off).
+    pub twisting: Option<twisting::Params>,
+}
+
+/// What one contact's law needs of the two spheres at this step.
+#[derive(Debug, Clone, Copy)]
+pub struct Pair {
+    /// Radii, m.
+    pub r: [f64; 2],
+    /// Centre of j minus centre of i, m.
+    pub dx_m: V3,
+    /// Half-step velocities, m/s.
+    pub v: [V3; 2],
+    /// Half-step spins, rad/s.
+    pub w: [V3; 2],
+}
+
+/// A contact's action: the force on j (i takes its opposite), N, and the moments on i and j
+/// about their centres, N·m.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Action {
+    /// Force on j, N.
+    pub force_j_n: V3,
+    /// Moment on i, N·m.
+    pub moment_i_nm: V3,
+    /// Moment on j, N·m.
+    pub moment_j_nm: V3,
+}
+
+crate::kernel::ledger::mechanisms! {
+    /// Energy the 3D contacts dissipated, J, by mechanism, and the bonds broken.
+    Dissipation {
+        /// Sliding and the bond's shear plateau, J.
+        slip_j,
+        /// The bond's tensile plateau, J.
+        plastic_j,
+        /// Rolling past its cap, J.
+        rolling_j,
+        /// Twisting past its cap, J.
+        twisting_j,
+        /// Elastic energy of bonds when they broke, J.
+        fracture_j,
+    }
+}
+
+/// The contact's action at this step, its history advanced. Increments use the half-step
+/// velocities (central differences, as in 2D); the history's frame turns from the stored normal
+/// to the present one.
+pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
+    let d = norm(g.dx_m);
+    let n = scale(1.0 / d, g.dx_m);
+    let n_old = c.normal;
+    let [ri, rj] = g.r;
+    // Lever arms to the contact point, shared in proportion to the radii.
+    let (li, lj) = (d * ri / (ri + rj), d * rj / (ri + rj));
+    // Velocity of j's material point at the contact relative to i's.
+    let vi = add(g.v[0], cross(g.w[0], scale(li, n)));
+    let vj = add(g.v[1], cross(g.w[1], scale(-lj, n)));
+    let v_rel = sub(vj, vi);
+    let opening = d - c.rest_m;
+    let step = dot(v_rel, n) * dt_s;
+    let slip = scale(dt_s, in_plane(v_rel, n));
+    let shear_last = carried(c.shear_n, n);
+    let (f_n, shear) = match c.bond {
+        Bond::Intact => {
+            let (f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, k.bond_kn_n_per_m, k.bond_kn_n_per_m, k.bond_tension_n);
+            diss.plastic_j += w;
+            // The shear spring resists j's slip: its force on j is −k_s × slip.
+            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks_n_per_m, k.bond_shear_n);
+            diss.slip_j += ws;
+            if failure::breaks(c.plastic_opening_m, k.bond_opening_at_break_m) {
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn_n_per_m, k.bond_ks_n_per_m) + moments_j(c, k);
+                diss.broken += 1;
+                c.bond = Bond::Frictional;
+                c.plastic_opening_m = 0.0;
+                c.forget(ri + rj);
+                c.normal = n;
+                // Broken in tension past the plateau: apart, carrying nothing.
+                return Action::default();
+            }
+            (f_n, s)
+        }
+        Bond::Frictional => {
+            if opening >= 0.0 {
+                // Apart: the history is forgotten, what the springs held booked where it went.
+                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks_n_per_m;
+                diss.rolling_j += moments_j(c, k);
+                c.forget(ri + rj);
+                c.normal = n;
+                return Action::default();
+            }
+            let f_n = normal::frictional(opening, k.kn_n_per_m);
+            let limit = friction::coulomb(f_n, k.mu, 0.0);
+            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.ks_n_per_m, limit);
+            diss.slip_j += ws;
+            (f_n, s)
+        }
+    };
+    c.shear_n = shear;
+    // Tension positive pulls j back toward i.
+    let force_j = add(scale(-f_n, n), shear);
+    let mut a = Action {
+        force_j_n: force_j,
+        // The shear force acts at the contact point: on j at −l_j n, on i (−force) at +l_i n.
+        moment_i_nm: cross(scale(li, n), scale(-1.0, force_j)),
+        moment_j_nm: cross(scale(-lj, n), force_j),
+    };
+    let r_mean = 0.5 * (ri + rj);
+    if let Some(p) = &k.rolling {
+        let d_theta = rolling::increment(ri, rj, n_old, n, g.w[0], g.w[1], dt_s);
+        let (m, w) = rolling::moment(carried(c.rolling_nm, n), d_theta, p, r_mean, f_n);
+        // The moments' work is twice M dθ (`moments_j`).
+        diss.rolling_j += 2.0 * w;
+        c.rolling_nm = m;
+        a.moment_i_nm = sub(a.moment_i_nm, m);
+        a.moment_j_nm = add(a.moment_j_nm, m);
+    }
+    if let Some(p) = &k.twisting {
+        let (t, w) = twisting::moment(c.twisting_nm, dot(g.w[0], n), dot(g.w[1], n), dt_s, p, ri.min(rj), f_n);
+        diss.twisting_j += 2.0 * w;
+        c.twisting_nm = t;
+        a.moment_i_nm = sub(a.moment_i_nm, scale(t, n));
+        a.moment_j_nm = add(a.moment_j_nm, scale(t, n));
+    }
+    c.normal = n;
+    a
+}
+
+/// Elastic energy in the contact's rolling and twisting springs, J: |M|²/k, not ½|M|²/k, since
+/// the moment M = k θ acts on both spheres and θ is half their relative turn (the moments'
+/// work is 2 M dθ).
+fn moments_j(c: &Contact, k: &Class) -> f64 {
+    k.rolling.map_or(0.0, |p| dot(c.rolling_nm, c.rolling_nm) / p.kr_nm_per_rad)
+        + k.twisting.map_or(0.0, |p| c.twisting_nm * c.twisting_nm / p.kt_nm_per_rad)
+}
+
+/// Elastic energy the contact's springs hold, J.
+pub fn stored_j(c: &Contact, k: &Class, d_m: f64) -> f64 {
+    let (kn, ks) = match c.bond {
+        Bond::Intact => (k.bond_kn_n_per_m, k.bond_ks_n_per_m),
+        Bond::Frictional => (k.kn_n_per_m, k.ks_n_per_m),
+    };
+    let stretch = match c.bond {
+        Bond::Intact => d_m - c.rest_m - c.plastic_opening_m,
+        Bond::Frictional => (d_m - c.rest_m).min(0.0),
+    };
+    0.5 * kn * stretch * stretch + 0.5 * dot(c.shear_n, c.shear_n) / ks + moments_j(c, k)
+}
