@@ -26,13 +26,18 @@ fn update(v: V3, accel: V3, p: &Params) -> (V3, f64) {
     (new, p.alpha_per_s * dot(mid, mid) * p.dt_s)
 }
 
-/// Advance every sphere one step from its contact force and moment sums. Returns the first
-/// sphere whose new state is not finite, if any (the caller names it and the step).
+/// Advance every sphere one step from its contact force and moment sums. Returns the sphere to
+/// blame if a state is not finite (the caller names it and the step): the first that came into
+/// the step so, else the first that left it so (a NaN spreads to a sphere's neighbours through
+/// their contacts within the step; the one it came from is the one to name).
 #[allow(clippy::too_many_arguments)]
 pub fn advance(s: &Spheres, pos: &mut [V3], vel: &mut [V3], spin: &mut [V3], force: &[V3], moment: &[V3], p: &Params, ledger: &mut Ledger) -> Option<usize> {
-    let mut bad = None;
+    let (mut bad_in, mut bad_out) = (None, None);
     for e in 0..s.len() {
         let before = vel[e];
+        if bad_in.is_none() && !(pos[e].iter().chain(&vel[e]).chain(&spin[e]).all(|x| x.is_finite())) {
+            bad_in = Some(e);
+        }
         if s.held[e] {
             vel[e] = s.prescribed_mps[e];
             spin[e] = [0.0; 3];
@@ -52,9 +57,9 @@ pub fn advance(s: &Spheres, pos: &mut [V3], vel: &mut [V3], spin: &mut [V3], for
             ledger.external_j -= dot(force[e], add(vel[e], before)) * 0.5 * p.dt_s;
         }
         pos[e] = add(pos[e], scale(p.dt_s, vel[e]));
-        if bad.is_none() && !(pos[e].iter().chain(&vel[e]).chain(&spin[e]).all(|x| x.is_finite())) {
-            bad = Some(e);
+        if bad_out.is_none() && !(pos[e].iter().chain(&vel[e]).chain(&spin[e]).all(|x| x.is_finite())) {
+            bad_out = Some(e);
         }
     }
-    bad
+    bad_in.or(bad_out)
 }

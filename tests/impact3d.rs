@@ -1,0 +1,132 @@
+//! A 3D impact through the run loop: a bonded block of spheres struck by a bonded steel cube at
+//! 150 m/s, bonds breaking and new contacts sliding, rolling and twisting. What must hold: the
+//! energy ledger closes within 1 % of the energy put in; a run resumed from a checkpoint ends
+//! bit for bit as the run that never stopped; a NaN stops the run naming the sphere and the step.
+
+use std::sync::Arc;
+
+use demsweep::kernel3d::law::{Class, rolling, twisting};
+use demsweep::kernel3d::{Builder, Model};
+use demsweep::run::{self, Checkpointing, RunCheckpoint};
+use demsweep::simulation::{Built, Measure, Simulation};
+
+const R: f64 = 0.005;
+
+fn concrete() -> Class {
+    let (kn, ks) = (2e7, 0.8e7);
+    Class {
+        bond_kn_n_per_m: kn,
+        bond_ks_n_per_m: ks,
+        bond_tension_n: 300.0,
+        bond_shear_n: 600.0,
+        // Softening over twice the elastic opening at the plateau.
+        bond_opening_at_break_m: 2.0 * 300.0 / kn,
+        kn_n_per_m: kn,
+        ks_n_per_m: ks,
+        mu: 0.5,
+        rolling: Some(rolling::Params { kr_nm_per_rad: ks * R * R, eta: 0.2 }),
+        twisting: Some(twisting::Params { kt_nm_per_rad: 0.5 * ks * R * R, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
+    }
+}
+
+fn steel() -> Class {
+    Class { bond_tension_n: f64::INFINITY, bond_shear_n: f64::INFINITY, bond_opening_at_break_m: f64::INFINITY, ..concrete() }
+}
+
+fn cube(origin: [f64; 3], n: usize) -> Vec<[f64; 3]> {
+    let mut c = Vec::new();
+    for x in 0..n {
+        for y in 0..n {
+            for z in 0..n {
+                c.push([origin[0] + 2.0 * R * x as f64, origin[1] + 2.0 * R * y as f64, origin[2] + 2.0 * R * z as f64]);
+            }
+        }
+    }
+    c
+}
+
+/// Bond every pair of a body's spheres that touch.
+fn bond_touching(b: &mut Builder, centres: &[[f64; 3]], range: std::ops::Range<usize>) {
+    for i in range.clone() {
+        for j in i + 1..range.end {
+            let (p, q) = (centres[i - range.start], centres[j - range.start]);
+            let d = ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2) + (p[2] - q[2]).powi(2)).sqrt();
+            if d < 2.0 * R * 1.001 {
+                b.bond(i, j);
+            }
+        }
+    }
+}
+
+#[derive(Debug)]
+struct KineticEnergy;
+
+impl Measure<Model> for KineticEnergy {
+    fn name(&self) -> &str {
+        "kinetic_energy_j"
+    }
+    fn value(&self, m: &Model) -> f64 {
+        m.kinetic_energy_j()
+    }
+}
+
+fn impact() -> Built<Model> {
+    let mut b = Builder::new(2);
+    b.class(0, 0, concrete());
+    b.class(0, 1, concrete());
+    b.class(1, 1, steel());
+    let block = cube([0.0; 3], 8);
+    let target = b.body("target", &block, &vec![R; block.len()], 0, 2400.0);
+    bond_touching(&mut b, &block, target.clone());
+    // The block's bottom layer is held.
+    for e in target.clone().filter(|&e| block[e][1] < R) {
+        b.hold(e, [0.0; 3]);
+    }
+    let striker = cube([5.0 * R, 16.0 * R + 0.2 * R, 5.0 * R], 3);
+    let projectile = b.body("projectile", &striker, &vec![R; striker.len()], 1, 7800.0);
+    bond_touching(&mut b, &striker, projectile.clone());
+    let model = b.build(&[(projectile, [0.0, -150.0, 0.0])]).unwrap();
+    let probes: Vec<Arc<dyn Measure<Model>>> = vec![Arc::new(KineticEnergy)];
+    Built { name: "impact3d".into(), model, probes, duration_s: 6e-4, every_steps: 200 }
+}
+
+#[test]
+fn the_energy_ledger_of_a_3d_impact_closes_within_one_percent() {
+    let r = run::run_with(impact(), run::Options::default()).unwrap();
+    let s = &r.summary;
+    println!("{} steps of {:.3e} s, {} bonds broken, KE {:.3} J, strain {:.3} J, dissipated {:.3} J, residual {:.3e} J ({:.3} %)",
+        s.steps, s.dt_s, s.bonds_broken, s.kinetic_energy_j, s.strain_energy_j, s.dissipated_j, s.energy_residual_j, 100.0 * s.energy_error);
+    println!("{:?}", s.contacts);
+    assert!(s.bonds_broken > 20, "the impact breaks bonds: {}", s.bonds_broken);
+    assert!(s.contacts.get("rolling_j").unwrap() > 0.0 && s.contacts.get("slip_j").unwrap() > 0.0);
+    assert!(s.energy_error.abs() < 0.01, "residual {:.3} % of the energy put in", 100.0 * s.energy_error);
+}
+
+#[test]
+fn a_3d_run_resumed_from_a_checkpoint_ends_bit_for_bit_as_the_run_that_never_stopped() {
+    let straight = run::run_with(impact(), run::Options::default()).unwrap();
+    let mut saved = Vec::new();
+    let mut save = |c: &RunCheckpoint| {
+        saved.push(c.to_bytes());
+        Err(demsweep::Error::input("test", "killed"))
+    };
+    let options = run::Options { checkpointing: Some(Checkpointing { every_steps: 200, save: &mut save }), ..Default::default() };
+    assert!(run::run_with(impact(), options).is_err());
+    let checkpoint = RunCheckpoint::from_bytes(&saved[0]).unwrap();
+    let resumed = run::run_with(impact(), run::Options { resume: Some(&checkpoint), ..Default::default() }).unwrap();
+    assert_eq!(resumed.series, straight.series);
+    assert_eq!(resumed.model.state, straight.model.state);
+}
+
+#[test]
+fn a_nan_in_the_state_stops_the_run_naming_the_sphere_and_the_step() {
+    let mut built = impact();
+    built.model.run_steps(10).unwrap();
+    built.model.state.vel_mps[77][2] = f64::NAN;
+    let err = built.model.run_steps(5).unwrap_err();
+    match err {
+        demsweep::Error::BlowUp { step, element, .. } => assert_eq!((step, element), (10, 77)),
+        other => panic!("{other:?}"),
+    }
+    assert!(built.model.checkpoint().len() > 8);
+}
