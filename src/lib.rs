@@ -21,6 +21,7 @@ pub mod empirical;
 pub use error::{Error, Result};
 pub mod kernel;
 pub mod lattice;
+pub mod packing3d;
 pub mod material;
 pub mod penetration;
 pub mod picture;
