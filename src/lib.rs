@@ -22,6 +22,7 @@ pub use error::{Error, Result};
 pub mod kernel;
 pub mod kernel3d;
 pub mod lattice;
+pub mod packing3d;
 pub mod material;
 pub mod penetration;
 pub mod picture;
