@@ -22,30 +22,30 @@ fn g() -> f64 {
     E / (2.0 * (1.0 + NU))
 }
 
-/// The beam's class for spheres of radius r: axial and shear springs of the cylinder of length
-/// 2r (E A / 2r, G A / 2r), rolling E I_f / r, twisting `kt`.
-fn class(r: f64, kt: f64) -> Class {
-    let a = PI * r * r;
+/// The beam's class: at spheres of radius r, axial and shear springs of the cylinder of length
+/// 2r (E A / 2r = E π r / 2, G π r / 2), rolling E I_f / r = E π r³ / 4 (eq 38), twisting
+/// `kt_pa` × r³.
+fn class(kt_pa: f64) -> Class {
     Class {
-        bond_kn_n_per_m: E * a / (2.0 * r),
-        bond_ks_n_per_m: g() * a / (2.0 * r),
-        bond_tension_n: f64::INFINITY,
-        bond_shear_n: f64::INFINITY,
-        bond_opening_at_break_m: f64::INFINITY,
-        kn_n_per_m: E * a / (2.0 * r),
-        ks_n_per_m: g() * a / (2.0 * r),
+        bond_kn_pa: E * PI / 2.0,
+        bond_ks_pa: g() * PI / 2.0,
+        bond_tension_pa: f64::INFINITY,
+        bond_shear_pa: f64::INFINITY,
+        bond_fracture_j_per_m2: f64::INFINITY,
+        kn_pa: E * PI / 2.0,
+        ks_pa: g() * PI / 2.0,
         mu: 0.5,
-        rolling: Some(rolling::Params { kr_nm_per_rad: E * PI * r.powi(4) / 4.0 / r, eta: f64::INFINITY }),
-        twisting: Some(twisting::Params { kt_nm_per_rad: kt, cap: twisting::Cap::None }),
+        rolling: Some(rolling::Params { kr_pa: E * PI / 4.0, eta: f64::INFINITY }),
+        twisting: Some(twisting::Params { kt_pa, cap: twisting::Cap::None }),
     }
 }
 
 /// The cantilever of `n` spheres with a tip force and moment, relaxed; returns the model.
-fn cantilever(n: usize, kt_of_r: impl Fn(f64) -> f64, tip_force: [f64; 3], tip_moment: [f64; 3]) -> Model {
+fn cantilever(n: usize, kt_pa: f64, tip_force: [f64; 3], tip_moment: [f64; 3]) -> Model {
     let r = L / (2.0 * (n - 1) as f64);
     let centres: Vec<[f64; 3]> = (0..n).map(|k| [2.0 * r * k as f64, 0.0, 0.0]).collect();
     let mut b = Builder::new(1);
-    b.class(0, 0, class(r, kt_of_r(r)));
+    b.class(0, 0, class(kt_pa));
     let beam = b.body("beam", &centres, &vec![r; n], 0, RHO);
     // The cylinder's mass per sphere, and its inertia about the beam's axis.
     let m = RHO * PI * r * r * 2.0 * r;
@@ -76,7 +76,7 @@ fn a_line_of_spheres_bends_like_an_euler_bernoulli_cantilever_at_second_order() 
         // A load that bends each beam by 10⁻⁴ L (small deflection: the theory is linear).
         let ei = E * PI * r.powi(4) / 4.0;
         let f = 3.0 * ei * 1e-4 / (L * L);
-        let m = cantilever(n, |r| twisting::beam_kt(g(), r), [0.0, -f, 0.0], [0.0; 3]);
+        let m = cantilever(n, twisting::beam_kt_pa(g()), [0.0, -f, 0.0], [0.0; 3]);
         let exact = f * L.powi(3) / (3.0 * ei);
         let tip = -m.displacement_m(n - 1)[1];
         let err = tip / exact - 1.0;
@@ -109,13 +109,13 @@ fn a_line_of_spheres_twists_like_a_circular_shaft_and_eq_41_as_printed_by_half()
         // twisting moments instead (each contact carries T = k_t × half the relative twist of
         // sphere i less sphere j's, so the tip turning positively gives negative moments).
         let twist = |m: &Model, kt: f64| -m.contacts().iter().map(|c| 2.0 * c.twisting_nm / kt).sum::<f64>();
-        let kt = twisting::beam_kt(g(), r);
-        let m = cantilever(n, |_| kt, [0.0; 3], [t, 0.0, 0.0]);
-        let phi = twist(&m, kt);
+        let kt = twisting::beam_kt_pa(g());
+        let m = cantilever(n, kt, [0.0; 3], [t, 0.0, 0.0]);
+        let phi = twist(&m, kt * r.powi(3));
         println!("N = {n}: twist {phi:.6e} rad, T L / (G I_t) {exact:.6e} rad");
         assert!((phi / exact - 1.0).abs() < 0.01, "N = {n}: {:+.3} %", 100.0 * (phi / exact - 1.0));
         let printed = 2.0 * g() * it / r;
-        let m = cantilever(n, |_| printed, [0.0; 3], [t, 0.0, 0.0]);
+        let m = cantilever(n, printed / r.powi(3), [0.0; 3], [t, 0.0, 0.0]);
         let ratio = twist(&m, printed) / exact;
         assert!((ratio - 0.5).abs() < 0.005, "eq 41 as printed twists by {ratio:.4} of the shaft");
     }

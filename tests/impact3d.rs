@@ -13,24 +13,24 @@ use demsweep::simulation::{Built, Measure, Simulation};
 const R: f64 = 0.005;
 
 fn concrete() -> Class {
-    let (kn, ks) = (2e7, 0.8e7);
+    // Springs of 2e7 and 0.8e7 N/m at R = 5 mm.
+    let (kn, ks) = (4e9, 1.6e9);
     Class {
-        bond_kn_n_per_m: kn,
-        bond_ks_n_per_m: ks,
-        bond_tension_n: 300.0,
-        bond_shear_n: 600.0,
-        // Softening over twice the elastic opening at the plateau.
-        bond_opening_at_break_m: 2.0 * 300.0 / kn,
-        kn_n_per_m: kn,
-        ks_n_per_m: ks,
+        bond_kn_pa: kn,
+        bond_ks_pa: ks,
+        bond_tension_pa: 4e6,
+        bond_shear_pa: 8e6,
+        bond_fracture_j_per_m2: 100.0,
+        kn_pa: kn,
+        ks_pa: ks,
         mu: 0.5,
-        rolling: Some(rolling::Params { kr_nm_per_rad: ks * R * R, eta: 0.2 }),
-        twisting: Some(twisting::Params { kt_nm_per_rad: 0.5 * ks * R * R, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
+        rolling: Some(rolling::Params { kr_pa: ks, eta: 0.2 }),
+        twisting: Some(twisting::Params { kt_pa: 0.5 * ks, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
     }
 }
 
 fn steel() -> Class {
-    Class { bond_tension_n: f64::INFINITY, bond_shear_n: f64::INFINITY, bond_opening_at_break_m: f64::INFINITY, ..concrete() }
+    Class { bond_tension_pa: f64::INFINITY, bond_shear_pa: f64::INFINITY, bond_fracture_j_per_m2: f64::INFINITY, ..concrete() }
 }
 
 fn cube(origin: [f64; 3], n: usize) -> Vec<[f64; 3]> {

@@ -32,9 +32,37 @@ fn code() -> Vec<(String, String)> {
         .collect()
 }
 
+/// The names `text` gives after `prefix` (`crate::` → the rooms it names).
+fn after(text: &str, prefix: &str) -> BTreeSet<String> {
+    text.match_indices(prefix).map(|(k, _)| text[k + prefix.len()..].chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect()).collect()
+}
+
 /// The rooms `text` names as `crate::<room>`.
 fn named(text: &str) -> BTreeSet<String> {
-    text.match_indices("crate::").map(|(k, _)| text[k + 7..].chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect()).collect()
+    after(text, "crate::")
+}
+
+/// A circle in `edges`, if there is one, as the path around it.
+fn circle(edges: &BTreeMap<String, BTreeSet<String>>) -> Option<Vec<String>> {
+    // Depth-first search; a node met again on the current path closes a circle.
+    fn visit(r: &str, edges: &BTreeMap<String, BTreeSet<String>>, path: &mut Vec<String>, done: &mut BTreeSet<String>) -> Option<Vec<String>> {
+        if let Some(k) = path.iter().position(|p| p == r) {
+            return Some(path[k..].iter().cloned().chain([r.to_string()]).collect());
+        }
+        if !done.insert(r.to_string()) {
+            return None;
+        }
+        path.push(r.to_string());
+        for n in edges.get(r).into_iter().flatten() {
+            if let Some(c) = visit(n, edges, path, done) {
+                return Some(c);
+            }
+        }
+        path.pop();
+        None
+    }
+    let mut done = BTreeSet::new();
+    edges.keys().find_map(|r| visit(r, edges, &mut Vec::new(), &mut done))
 }
 
 fn room(path: &str) -> String {
@@ -53,27 +81,26 @@ fn no_circle_of_imports_between_rooms() {
         edges.entry(from).or_default().extend(to);
     }
     assert!(edges.len() > 20, "the rooms were read: {:?}", edges.keys());
-    // Depth-first search; a room met again on the current path closes a circle.
-    fn visit(r: &str, edges: &BTreeMap<String, BTreeSet<String>>, path: &mut Vec<String>, done: &mut BTreeSet<String>) -> Option<Vec<String>> {
-        if let Some(k) = path.iter().position(|p| p == r) {
-            return Some(path[k..].iter().cloned().chain([r.to_string()]).collect());
+    let found = circle(&edges);
+    assert!(found.is_none(), "a circle between rooms: {}", found.unwrap().join(" → "));
+}
+
+#[test]
+fn no_circle_of_imports_inside_either_kernel() {
+    for kernel in ["kernel", "kernel3d"] {
+        let files: Vec<(String, String)> = code().into_iter().filter(|(p, _)| p.starts_with(&format!("{kernel}/"))).collect();
+        // The kernel's modules: the files and folders right under it.
+        let modules: BTreeSet<String> = files.iter().map(|(p, _)| room(&p[kernel.len() + 1..])).filter(|m| m != "mod").collect();
+        let mut edges: BTreeMap<String, BTreeSet<String>> = BTreeMap::new();
+        for (path, text) in &files {
+            let from = room(&path[kernel.len() + 1..]);
+            let to = after(text, "super::").into_iter().chain(after(text, &format!("crate::{kernel}::")));
+            let to: Vec<String> = to.filter(|m| *m != from && modules.contains(m)).collect();
+            edges.entry(from).or_default().extend(to);
         }
-        if !done.insert(r.to_string()) {
-            return None;
-        }
-        path.push(r.to_string());
-        for n in edges.get(r).into_iter().flatten() {
-            if let Some(c) = visit(n, edges, path, done) {
-                return Some(c);
-            }
-        }
-        path.pop();
-        None
-    }
-    let mut done = BTreeSet::new();
-    for r in edges.keys() {
-        let circle = visit(r, &edges, &mut Vec::new(), &mut done);
-        assert!(circle.is_none(), "a circle between rooms: {}", circle.unwrap().join(" → "));
+        assert!(edges.len() > 8, "{kernel}'s modules were read: {:?}", edges.keys());
+        let found = circle(&edges);
+        assert!(found.is_none(), "a circle inside {kernel}/: {}", found.unwrap().join(" → "));
     }
 }
 

@@ -13,15 +13,16 @@ const KN: f64 = 1e7;
 const OVERLAP: f64 = 1e-5;
 const DT: f64 = 1e-6;
 
+/// Springs of KN (N/m) at spheres of radius R.
 fn class(rolling: Option<rolling::Params>, twisting: Option<twisting::Params>) -> Class {
     Class {
-        bond_kn_n_per_m: KN,
-        bond_ks_n_per_m: KN,
-        bond_tension_n: f64::INFINITY,
-        bond_shear_n: f64::INFINITY,
-        bond_opening_at_break_m: 0.0,
-        kn_n_per_m: KN,
-        ks_n_per_m: KN,
+        bond_kn_pa: KN / R,
+        bond_ks_pa: KN / R,
+        bond_tension_pa: f64::INFINITY,
+        bond_shear_pa: f64::INFINITY,
+        bond_fracture_j_per_m2: 0.0,
+        kn_pa: KN / R,
+        ks_pa: KN / R,
         mu: 0.5,
         rolling,
         twisting,
@@ -35,7 +36,8 @@ fn pair(w_i: [f64; 3]) -> Pair {
 
 #[test]
 fn the_rolling_moment_is_capped_at_eta_r_fn_and_unloads_from_the_cap() {
-    let p = rolling::Params { kr_nm_per_rad: 50.0, eta: 0.3 };
+    const KR: f64 = 50.0;
+    let p = rolling::Params { kr_pa: KR / R.powi(3), eta: 0.3 };
     let k = class(Some(p), None);
     let mut c = Contact::new(0, 1, 0, Bond::Frictional, 2.0 * R, [1.0, 0.0, 0.0]);
     let mut d = Dissipation::default();
@@ -44,11 +46,11 @@ fn the_rolling_moment_is_capped_at_eta_r_fn_and_unloads_from_the_cap() {
     // Each step rolls by half the relative spin: dθ = ω Δt / 2, about z.
     let dtheta = 0.5 * omega * DT;
     // (one short of the cap: the step that would land on it may round past it)
-    let elastic_steps = (cap / (p.kr_nm_per_rad * dtheta)).floor() as usize - 1;
+    let elastic_steps = (cap / (KR * dtheta)).floor() as usize - 1;
     assert!(elastic_steps > 10, "{elastic_steps}");
     for s in 1..=elastic_steps {
         law::act(&mut c, &k, &pair([0.0, 0.0, omega]), DT, &mut d);
-        let want = p.kr_nm_per_rad * dtheta * s as f64;
+        let want = KR * dtheta * s as f64;
         assert!((c.rolling_nm[2] - want).abs() < 1e-9 * cap, "step {s}: {} against k_r θ = {want}", c.rolling_nm[2]);
     }
     assert_eq!(d.rolling_j, 0.0, "below the cap nothing is dissipated");
@@ -71,7 +73,7 @@ fn the_rolling_moment_is_capped_at_eta_r_fn_and_unloads_from_the_cap() {
     // Reversed: the moment leaves the cap at once, along k_r.
     for s in 1..=5 {
         law::act(&mut c, &k, &pair([0.0, 0.0, -omega]), DT, &mut d);
-        let want = cap - p.kr_nm_per_rad * dtheta * s as f64;
+        let want = cap - KR * dtheta * s as f64;
         assert!((c.rolling_nm[2] - want).abs() < 1e-9 * cap, "unloading step {s}: {} against {want}", c.rolling_nm[2]);
     }
 }
@@ -79,7 +81,8 @@ fn the_rolling_moment_is_capped_at_eta_r_fn_and_unloads_from_the_cap() {
 #[test]
 fn the_twisting_moment_is_capped_by_mohr_coulomb_over_the_contact_disc() {
     let (tan_phi, cohesion) = (0.6, 2e4);
-    let p = twisting::Params { kt_nm_per_rad: 20.0, cap: twisting::Cap::MohrCoulomb { tan_phi, cohesion_pa: cohesion } };
+    const KT: f64 = 20.0;
+    let p = twisting::Params { kt_pa: KT / R.powi(3), cap: twisting::Cap::MohrCoulomb { tan_phi, cohesion_pa: cohesion } };
     let k = class(None, Some(p));
     let mut c = Contact::new(0, 1, 0, Bond::Frictional, 2.0 * R, [1.0, 0.0, 0.0]);
     let mut d = Dissipation::default();
@@ -93,6 +96,6 @@ fn the_twisting_moment_is_capped_by_mohr_coulomb_over_the_contact_disc() {
     assert!((c.twisting_nm - cap).abs() < 1e-12 * cap, "{} against eq 42's {cap}", c.twisting_nm);
     assert!(d.twisting_j > 0.0);
     law::act(&mut c, &k, &pair([-omega, 0.0, 0.0]), DT, &mut d);
-    let want = cap - p.kt_nm_per_rad * 0.5 * omega * DT;
+    let want = cap - KT * 0.5 * omega * DT;
     assert!((c.twisting_nm - want).abs() < 1e-9 * cap, "unloads from the cap: {} against {want}", c.twisting_nm);
 }

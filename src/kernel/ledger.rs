@@ -1,10 +1,8 @@
-//! The energy ledger: work and dissipation accumulated since the start of a run, per
-//! mechanism (the contacts' listed once, in `law::Dissipation`). `energy` computes the strain
-//! energy it is balanced against.
+//! The energy ledger of either kernel: work and dissipation accumulated since the start of a
+//! run, per mechanism (the contacts' listed once, in the kernel's `law::Dissipation`, declared
+//! with [`mechanisms!`]). `energy` computes the strain energy it is balanced against.
 
 use serde::{Deserialize, Serialize};
-
-use super::law::Dissipation;
 
 /// What a kernel's contacts dissipate, by mechanism: a struct made by [`mechanisms!`].
 pub trait Mechanisms: Copy + Default {
@@ -61,7 +59,7 @@ pub(crate) use mechanisms;
 /// Accumulated work and dissipation since the start of the run, J; `D` the kernel's contact
 /// mechanisms.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Serialize, Deserialize)]
-pub struct Ledger<D = Dissipation> {
+pub struct Ledger<D> {
     /// Kinetic + strain energy at the start, J.
     pub initial_j: f64,
     /// Work of loads, gravity and prescribed motions on the model, J.

@@ -523,7 +523,7 @@ impl Model {
         pool: bool,
         contacts: &mut contacts::Contacts,
         plan: &mut exec::pieces::Plan,
-        ledger: &mut ledger::Ledger,
+        ledger: &mut ledger::Ledger<Dissipation>,
     ) {
         let touching = |c: &contact::Contact| {
             let (pi, pj) = (pos[c.i as usize], pos[c.j as usize]);

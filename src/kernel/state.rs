@@ -125,7 +125,7 @@ pub struct State {
     /// its own margin triggers a rebuild.
     pub margin_m: Vec<f64>,
     /// Energy ledger.
-    pub ledger: Ledger,
+    pub ledger: Ledger<super::law::Dissipation>,
     /// Completed steps.
     pub steps: u64,
     /// Full neighbour rebuilds so far.

@@ -146,7 +146,7 @@ impl Builder {
             })
             .collect();
         let sp = &model.spheres;
-        let omega = omega_max_sq(&sp.mass_kg, &sp.inertia_kg_m2, &sp.held, &links).sqrt();
+        let omega = omega_max_sq(&sp.radius_m, &sp.mass_kg, &sp.inertia_kg_m2, &sp.held, &links).sqrt();
         if !(omega > 0.0 && omega.is_finite()) {
             return Err(Error::input("class", format!("the contacts give no finite frequency bound ({omega} rad/s): no free sphere in a contact?")));
         }

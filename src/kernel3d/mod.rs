@@ -13,6 +13,7 @@ pub mod integrate;
 pub mod law;
 pub mod stability;
 pub mod state;
+pub mod stiffness;
 pub mod vec3;
 
 pub use build::Builder;
@@ -157,7 +158,11 @@ impl Model {
         let st = &self.state;
         st.contacts
             .iter()
-            .map(|c| law::stored_j(c, &self.classes[c.class as usize], norm(sub(st.pos_m[c.j as usize], st.pos_m[c.i as usize]))))
+            .map(|c| {
+                let (i, j) = (c.i as usize, c.j as usize);
+                let r_mean = 0.5 * (self.spheres.radius_m[i] + self.spheres.radius_m[j]);
+                law::stored_j(c, &self.classes[c.class as usize], norm(sub(st.pos_m[j], st.pos_m[i])), r_mean)
+            })
             .sum()
     }
 

@@ -22,19 +22,16 @@ pub struct Link<'a> {
     pub class: &'a Class,
 }
 
-/// The bound on ω_max², rad²/s², of spheres with `mass_kg` and `inertia_kg_m2` (held spheres
-/// excluded: their rows are not free) joined by `links`.
-pub fn omega_max_sq(mass_kg: &[f64], inertia_kg_m2: &[f64], held: &[bool], links: &[Link<'_>]) -> f64 {
+/// The bound on ω_max², rad²/s², of spheres with `radius_m`, `mass_kg` and `inertia_kg_m2`
+/// (held spheres excluded: their rows are not free) joined by `links`.
+pub fn omega_max_sq(radius_m: &[f64], mass_kg: &[f64], inertia_kg_m2: &[f64], held: &[bool], links: &[Link<'_>]) -> f64 {
     let n = mass_kg.len();
     let (mut trans, mut rot) = (vec![0.0f64; n], vec![0.0f64; n]);
     let r3 = 3f64.sqrt();
     for l in links {
-        let k = l.class;
-        let kn = k.bond_kn_n_per_m.max(k.kn_n_per_m);
-        let ks = k.bond_ks_n_per_m.max(k.ks_n_per_m);
-        let kr = k.rolling.map_or(0.0, |p| p.kr_nm_per_rad);
-        let kt = k.twisting.map_or(0.0, |p| p.kt_nm_per_rad);
         let [i, j] = l.ends;
+        let k = l.class.at(0.5 * (radius_m[i] + radius_m[j]));
+        let (kn, ks, kr, kt) = (k.bond_kn.max(k.kn), k.bond_ks.max(k.ks), k.kr, k.kt);
         let im = |e: usize| 1.0 / mass_kg[e].sqrt();
         let ii = |e: usize| 1.0 / inertia_kg_m2[e].sqrt();
         // Σ_q |a_q| / √M_q of each spring type.

@@ -16,29 +16,84 @@ use super::contact::{Bond, Contact};
 use super::vec3::{V3, add, carried, cross, dot, in_plane, norm, scale, sub};
 use crate::kernel::law::{failure, friction, normal};
 
-/// Parameters of one kind of contact: configuration, fixed when the model is built.
+/// Parameters of one kind of contact: configuration, fixed when the model is built. Every
+/// stiffness and strength is a modulus, scaled at each contact by its mean radius r̄ (k_n and
+/// k_s by r̄, k_r and k_t by r̄³, forces by the bond's area π r̄²), so a packing of other
+/// sphere sizes gives the same material without recalibration (`kernel3d::stiffness`).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Class {
-    /// Bond springs: normal k_n and shear k_s, N/m.
-    pub bond_kn_n_per_m: f64,
-    /// Bond shear stiffness, N/m.
-    pub bond_ks_n_per_m: f64,
-    /// Tensile plateau of a bond, N (σ_t × bond area; ∞: no yield).
-    pub bond_tension_n: f64,
-    /// Shear plateau of a bond, N (∞: none).
-    pub bond_shear_n: f64,
-    /// Plastic opening at which a bond breaks, m (0: at the plateau; ∞: never).
-    pub bond_opening_at_break_m: f64,
-    /// Frictional contacts: normal stiffness, N/m.
-    pub kn_n_per_m: f64,
-    /// Frictional contacts: shear stiffness, N/m.
-    pub ks_n_per_m: f64,
+    /// Bond normal stiffness over r̄, Pa (k_n = this × r̄).
+    pub bond_kn_pa: f64,
+    /// Bond shear stiffness over r̄, Pa.
+    pub bond_ks_pa: f64,
+    /// Bond tensile strength, Pa: the plateau is this × π r̄² (∞: no yield).
+    pub bond_tension_pa: f64,
+    /// Bond shear strength, Pa: the shear plateau is this × π r̄² (∞: none).
+    pub bond_shear_pa: f64,
+    /// Fracture energy G_f, J/m²: a bond breaks when the work of its normal force reaches
+    /// G_f π r̄² (seed 000 §5, eq 5.7, on the bond's area; 0: at the plateau; ∞: never).
+    pub bond_fracture_j_per_m2: f64,
+    /// Frictional contacts: normal stiffness over r̄, Pa.
+    pub kn_pa: f64,
+    /// Frictional contacts: shear stiffness over r̄, Pa.
+    pub ks_pa: f64,
     /// Coulomb coefficient μ.
     pub mu: f64,
     /// Rolling resistance (None: off).
     pub rolling: Option<rolling::Params>,
     /// Twisting resistance (None: off).
     pub twisting: Option<twisting::Params>,
+}
+
+/// A class's springs and strengths at one contact of mean radius r̄.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Local {
+    /// Bond springs, N/m.
+    pub bond_kn: f64,
+    /// Bond shear spring, N/m.
+    pub bond_ks: f64,
+    /// Bond tensile plateau, N.
+    pub tension_n: f64,
+    /// Bond shear plateau, N.
+    pub shear_n: f64,
+    /// Plastic opening at which the bond breaks, m.
+    pub at_break_m: f64,
+    /// Frictional springs, N/m.
+    pub kn: f64,
+    /// Frictional shear spring, N/m.
+    pub ks: f64,
+    /// Rolling stiffness, N·m/rad (0: off).
+    pub kr: f64,
+    /// Twisting stiffness, N·m/rad (0: off).
+    pub kt: f64,
+}
+
+impl Class {
+    /// The springs and strengths at a contact of mean radius `r_m` (m).
+    #[inline]
+    pub fn at(&self, r_m: f64) -> Local {
+        let area = std::f64::consts::PI * r_m * r_m;
+        let (bond_kn, tension_n) = (self.bond_kn_pa * r_m, self.bond_tension_pa * area);
+        // The area under the normal force–opening curve, F_t²/(2 k_n) + F_t δ_p, reaches
+        // G_f A at δ_p = G_f A / F_t − F_t / (2 k_n) (the 2D kernel's rule, on the 3D area).
+        let at_break_m = if self.bond_fracture_j_per_m2.is_infinite() || tension_n.is_infinite() {
+            f64::INFINITY
+        } else {
+            (self.bond_fracture_j_per_m2 * area / tension_n - 0.5 * tension_n / bond_kn).max(0.0)
+        };
+        let r3 = r_m * r_m * r_m;
+        Local {
+            bond_kn,
+            bond_ks: self.bond_ks_pa * r_m,
+            tension_n,
+            shear_n: self.bond_shear_pa * area,
+            at_break_m,
+            kn: self.kn_pa * r_m,
+            ks: self.ks_pa * r_m,
+            kr: self.rolling.map_or(0.0, |p| p.kr_pa * r3),
+            kt: self.twisting.map_or(0.0, |p| p.kt_pa * r3),
+        }
+    }
 }
 
 /// What one contact's law needs of the two spheres at this step.
@@ -85,7 +140,8 @@ crate::kernel::ledger::mechanisms! {
 /// The contact's action at this step, its history advanced. Increments use the half-step
 /// velocities (central differences, as in 2D); the history's frame turns from the stored normal
 /// to the present one.
-pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
+pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
+    let k = class.at(0.5 * (g.r[0] + g.r[1]));
     let d = norm(g.dx_m);
     let n = scale(1.0 / d, g.dx_m);
     let n_old = c.normal;
@@ -102,13 +158,13 @@ pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipati
     let shear_last = carried(c.shear_n, n);
     let (f_n, shear) = match c.bond {
         Bond::Intact => {
-            let (f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, k.bond_kn_n_per_m, k.bond_kn_n_per_m, k.bond_tension_n);
+            let (f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, k.bond_kn, k.bond_kn, k.tension_n);
             diss.plastic_j += w;
             // The shear spring resists j's slip: its force on j is −k_s × slip.
-            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks_n_per_m, k.bond_shear_n);
+            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks, k.shear_n);
             diss.slip_j += ws;
-            if failure::breaks(c.plastic_opening_m, k.bond_opening_at_break_m) {
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn_n_per_m, k.bond_ks_n_per_m) + moments_j(c, k);
+            if failure::breaks(c.plastic_opening_m, k.at_break_m) {
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, &k);
                 diss.broken += 1;
                 c.bond = Bond::Frictional;
                 c.plastic_opening_m = 0.0;
@@ -122,15 +178,15 @@ pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipati
         Bond::Frictional => {
             if opening >= 0.0 {
                 // Apart: the history is forgotten, what the springs held booked where it went.
-                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks_n_per_m;
-                diss.rolling_j += moments_j(c, k);
+                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks;
+                diss.rolling_j += moments_j(c, &k);
                 c.forget(ri + rj);
                 c.normal = n;
                 return Action::default();
             }
-            let f_n = normal::frictional(opening, k.kn_n_per_m);
-            let limit = friction::coulomb(f_n, k.mu, 0.0);
-            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.ks_n_per_m, limit);
+            let f_n = normal::frictional(opening, k.kn);
+            let limit = friction::coulomb(f_n, class.mu, 0.0);
+            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.ks, limit);
             diss.slip_j += ws;
             (f_n, s)
         }
@@ -145,17 +201,17 @@ pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipati
         moment_j_nm: cross(scale(-lj, n), force_j),
     };
     let r_mean = 0.5 * (ri + rj);
-    if let Some(p) = &k.rolling {
+    if let Some(p) = &class.rolling {
         let d_theta = rolling::increment(ri, rj, n_old, n, g.w[0], g.w[1], dt_s);
-        let (m, w) = rolling::moment(carried(c.rolling_nm, n), d_theta, p, r_mean, f_n);
+        let (m, w) = rolling::moment(carried(c.rolling_nm, n), d_theta, k.kr, p.eta, r_mean, f_n);
         // The moments' work is twice M dθ (`moments_j`).
         diss.rolling_j += 2.0 * w;
         c.rolling_nm = m;
         a.moment_i_nm = sub(a.moment_i_nm, m);
         a.moment_j_nm = add(a.moment_j_nm, m);
     }
-    if let Some(p) = &k.twisting {
-        let (t, w) = twisting::moment(c.twisting_nm, dot(g.w[0], n), dot(g.w[1], n), dt_s, p, ri.min(rj), f_n);
+    if let Some(p) = &class.twisting {
+        let (t, w) = twisting::moment(c.twisting_nm, dot(g.w[0], n), dot(g.w[1], n), dt_s, k.kt, p.cap, ri.min(rj), f_n);
         diss.twisting_j += 2.0 * w;
         c.twisting_nm = t;
         a.moment_i_nm = sub(a.moment_i_nm, scale(t, n));
@@ -168,20 +224,22 @@ pub fn act(c: &mut Contact, k: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipati
 /// Elastic energy in the contact's rolling and twisting springs, J: |M|²/k, not ½|M|²/k, since
 /// the moment M = k θ acts on both spheres and θ is half their relative turn (the moments'
 /// work is 2 M dθ).
-fn moments_j(c: &Contact, k: &Class) -> f64 {
-    k.rolling.map_or(0.0, |p| dot(c.rolling_nm, c.rolling_nm) / p.kr_nm_per_rad)
-        + k.twisting.map_or(0.0, |p| c.twisting_nm * c.twisting_nm / p.kt_nm_per_rad)
+fn moments_j(c: &Contact, k: &Local) -> f64 {
+    let rolling = if k.kr > 0.0 { dot(c.rolling_nm, c.rolling_nm) / k.kr } else { 0.0 };
+    rolling + if k.kt > 0.0 { c.twisting_nm * c.twisting_nm / k.kt } else { 0.0 }
 }
 
-/// Elastic energy the contact's springs hold, J.
-pub fn stored_j(c: &Contact, k: &Class, d_m: f64) -> f64 {
+/// Elastic energy the contact's springs hold, J, at centre distance `d_m` between spheres of
+/// mean radius `r_mean_m` (m).
+pub fn stored_j(c: &Contact, class: &Class, d_m: f64, r_mean_m: f64) -> f64 {
+    let k = class.at(r_mean_m);
     let (kn, ks) = match c.bond {
-        Bond::Intact => (k.bond_kn_n_per_m, k.bond_ks_n_per_m),
-        Bond::Frictional => (k.kn_n_per_m, k.ks_n_per_m),
+        Bond::Intact => (k.bond_kn, k.bond_ks),
+        Bond::Frictional => (k.kn, k.ks),
     };
     let stretch = match c.bond {
         Bond::Intact => d_m - c.rest_m - c.plastic_opening_m,
         Bond::Frictional => (d_m - c.rest_m).min(0.0),
     };
-    0.5 * kn * stretch * stretch + 0.5 * dot(c.shear_n, c.shear_n) / ks + moments_j(c, k)
+    0.5 * kn * stretch * stretch + 0.5 * dot(c.shear_n, c.shear_n) / ks + moments_j(c, &k)
 }

@@ -20,8 +20,9 @@ use super::capped::capped;
 /// Rolling part parameters (a contact class's; configuration).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Params {
-    /// Rolling stiffness k_r, N·m/rad (eq 31 for granular media, eq 38 for a beam).
-    pub kr_nm_per_rad: f64,
+    /// Rolling stiffness over r̄³, Pa (k_r = this × r̄³: eq 31's k_s r² for granular media,
+    /// eq 38's E π r³/4 for a beam).
+    pub kr_pa: f64,
     /// Elastic limit η of eq 16 (∞: no cap).
     pub eta: f64,
 }
@@ -42,14 +43,15 @@ pub fn increment(ra_m: f64, rb_m: f64, n_old: V3, n: V3, wa_rad_per_s: V3, wb_ra
 }
 
 /// The new rolling moment (N·m, in the plane normal to `n`) from the last one carried into that
-/// plane, the angle increment `d_theta` and the normal force `f_n_n` (N): elastic k_r θ_r
-/// (eq 15) capped at η r |F_n| (eq 16) with θ_r reset to the cap (eqs 17–20). Returns (moment,
-/// dissipated energy J).
+/// plane, the angle increment `d_theta`, the stiffness `kr` (N·m/rad) and the normal force
+/// `f_n_n` (N): elastic k_r θ_r (eq 15) capped at η r |F_n| (eq 16) with θ_r reset to the cap
+/// (eqs 17–20). Returns (moment, the cap's share of the moments' work: half the dissipated
+/// energy, J).
 #[inline]
-pub fn moment(last_nm: V3, d_theta: V3, p: &Params, mean_radius_m: f64, f_n_n: f64) -> (V3, f64) {
+pub fn moment(last_nm: V3, d_theta: V3, kr: f64, eta: f64, mean_radius_m: f64, f_n_n: f64) -> (V3, f64) {
     // η = ∞ is no cap, also at F_n = 0 (where ∞ × 0 would be NaN).
-    let limit = if p.eta.is_finite() { p.eta * mean_radius_m * f_n_n.abs() } else { f64::INFINITY };
-    capped(last_nm, d_theta, p.kr_nm_per_rad, limit)
+    let limit = if eta.is_finite() { eta * mean_radius_m * f_n_n.abs() } else { f64::INFINITY };
+    capped(last_nm, d_theta, kr, limit)
 }
 
 #[cfg(test)]
@@ -75,8 +77,7 @@ mod tests {
 
     #[test]
     fn the_moment_is_capped_at_eta_r_fn() {
-        let p = Params { kr_nm_per_rad: 100.0, eta: 0.5 };
-        let (m, w) = moment([0.0; 3], [0.0, 1.0, 0.0], &p, 0.1, -40.0);
+        let (m, w) = moment([0.0; 3], [0.0, 1.0, 0.0], 100.0, 0.5, 0.1, -40.0);
         assert!((m[1] - 2.0).abs() < 1e-12 && w > 0.0, "{m:?} {w}");
     }
 }

@@ -26,16 +26,16 @@ pub enum Cap {
 /// Twisting part parameters (a contact class's; configuration).
 #[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Params {
-    /// Twisting stiffness k_t, N·m/rad.
-    pub kt_nm_per_rad: f64,
+    /// Twisting stiffness over r̄³, Pa (k_t = this × r̄³; a beam's G π / 2, `beam_kt_pa`).
+    pub kt_pa: f64,
     /// Its cap.
     pub cap: Cap,
 }
 
-/// k_t of a beam of spheres of radius `r_m` (m) in a material of shear modulus `g_pa`, with
-/// I_t = π r⁴/2 (eq 39) and the factor of eq 41 corrected (module doc), N·m/rad.
-pub fn beam_kt(g_pa: f64, r_m: f64) -> f64 {
-    g_pa * std::f64::consts::PI * r_m.powi(4) / 2.0 / r_m
+/// k_t / r³ of a beam of spheres in a material of shear modulus `g_pa`: G I_t / r with
+/// I_t = π r⁴/2 (eq 39) and the factor of eq 41 corrected (module doc), Pa.
+pub fn beam_kt_pa(g_pa: f64) -> f64 {
+    g_pa * std::f64::consts::PI / 2.0
 }
 
 /// The cap of eq 42 (or none), N·m, for the smaller radius `r_min_m` and normal force `f_n_n`.
@@ -50,12 +50,14 @@ pub fn limit_nm(cap: Cap, r_min_m: f64, f_n_n: f64) -> f64 {
 }
 
 /// The new twisting moment about the normal (N·m) from the last one, the spins' components
-/// along the normal `wa_n`, `wb_n` (rad/s) over `dt_s`: k_t times half the relative twist
-/// (eqs 21–24), capped and reset at the cap (eqs 25–28) — the scalar return map of the 2D shear
-/// spring, whose energy booking it shares. Returns (moment, dissipated energy J).
+/// along the normal `wa_n`, `wb_n` (rad/s) over `dt_s`, stiffness `kt` (N·m/rad) and `cap`:
+/// k_t times half the relative twist (eqs 21–24), capped and reset at the cap (eqs 25–28) — the
+/// scalar return map of the 2D shear spring, whose energy booking it shares. Returns (moment,
+/// half the dissipated energy J: the moment acts on both spheres).
 #[inline]
-pub fn moment(last_nm: f64, wa_n: f64, wb_n: f64, dt_s: f64, p: &Params, r_min_m: f64, f_n_n: f64) -> (f64, f64) {
-    let (kt, limit) = (p.kt_nm_per_rad, limit_nm(p.cap, r_min_m, f_n_n));
+#[allow(clippy::too_many_arguments)]
+pub fn moment(last_nm: f64, wa_n: f64, wb_n: f64, dt_s: f64, kt: f64, cap: Cap, r_min_m: f64, f_n_n: f64) -> (f64, f64) {
+    let limit = limit_nm(cap, r_min_m, f_n_n);
     let twist = 0.5 * (wa_n - wb_n) * dt_s;
     // capped_spring works on the spring's elastic displacement (here the angle, moment / k_t).
     let (m, _, w) = capped_spring(last_nm / kt, twist, kt, kt, limit);
