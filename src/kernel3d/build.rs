@@ -27,12 +27,15 @@ pub struct Builder {
     pub safety: f64,
     /// Neighbour skin over the mean radius.
     pub skin_ratio: f64,
+    /// A fixed step, s, taken whatever the bound says (to measure where the bound lies; the
+    /// bound is still computed and reported).
+    pub dt_s: Option<f64>,
 }
 
 impl Builder {
     /// An empty model of `kinds` sphere kinds (materials).
     pub fn new(kinds: usize) -> Builder {
-        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3 }
+        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3, dt_s: None }
     }
 
     /// The class of contacts between kinds a and b (both orders).
@@ -85,6 +88,18 @@ impl Builder {
     pub fn mass(&mut self, e: usize, mass_kg: f64, inertia_kg_m2: f64) {
         self.spheres.mass_kg[e] = mass_kg;
         self.spheres.inertia_kg_m2[e] = inertia_kg_m2;
+    }
+
+    /// Scale the masses and inertias of the spheres `range` so that they weigh `total_kg`: a
+    /// packing standing for a solid carries the solid's mass (density × its volume), not the
+    /// spheres' alone.
+    pub fn mass_total(&mut self, range: Range<usize>, total_kg: f64) {
+        let now: f64 = self.spheres.mass_kg[range.clone()].iter().sum();
+        let f = total_kg / now;
+        for e in range {
+            self.spheres.mass_kg[e] *= f;
+            self.spheres.inertia_kg_m2[e] *= f;
+        }
     }
 
     /// Build: bonds at their present lengths, the contacts the spheres start with, and the step.
@@ -152,7 +167,7 @@ impl Builder {
         }
         model.omega_bound_rad_per_s = omega;
         model.dt_bound_s = 2.0 / omega;
-        model.motion.dt_s = self.safety * model.dt_bound_s;
+        model.motion.dt_s = self.dt_s.unwrap_or(self.safety * model.dt_bound_s);
         model.state.ledger.initial_j = model.kinetic_energy_j() + model.strain_energy_j();
         Ok(model)
     }
