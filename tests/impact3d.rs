@@ -130,3 +130,20 @@ fn a_nan_in_the_state_stops_the_run_naming_the_sphere_and_the_step() {
     }
     assert!(built.model.checkpoint().len() > 8);
 }
+
+#[test]
+fn a_3d_impact_is_bitwise_the_same_on_1_2_and_8_threads() {
+    let on = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        let mut built = impact();
+        // Every step on the pool, however few the contacts.
+        built.model.parallel_min_contacts = 0;
+        pool.install(|| run::run_with(built, run::Options::default())).unwrap()
+    };
+    let one = on(1);
+    for threads in [2, 8] {
+        let r = on(threads);
+        assert_eq!(r.model.checkpoint(), one.model.checkpoint(), "{threads} threads");
+        assert_eq!(r.series, one.series);
+    }
+}

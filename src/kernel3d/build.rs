@@ -146,7 +146,9 @@ impl Builder {
             dt_bound_s: 0.0,
             omega_bound_rad_per_s: 0.0,
             skin_m: self.skin_ratio * mean_r,
-            threading: Threading::Serial,
+            threading: Threading::Pool,
+            parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
+            actions: Vec::new(),
             state: State { pos_m: pos, vel_mps: vel, spin_rad_per_s: vec![[0.0; 3]; n], contacts, ..Default::default() },
         };
         model.search();

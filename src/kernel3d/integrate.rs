@@ -3,7 +3,7 @@
 //! sphere's inertia is the same about every axis, so its spin needs no gyroscopic term and no
 //! orientation: the laws are incremental.
 
-use super::state::{Ledger, Spheres};
+use super::state::Spheres;
 use super::vec3::{V3, add, dot, scale};
 
 /// The step's constants: Δt (s) and α (1/s).
@@ -26,40 +26,65 @@ fn update(v: V3, accel: V3, p: &Params) -> (V3, f64) {
     (new, p.alpha_per_s * dot(mid, mid) * p.dt_s)
 }
 
-/// Advance every sphere one step from its contact force and moment sums. Returns the sphere to
-/// blame if a state is not finite (the caller names it and the step): the first that came into
-/// the step so, else the first that left it so (a NaN spreads to a sphere's neighbours through
-/// their contacts within the step; the one it came from is the one to name).
-#[allow(clippy::too_many_arguments)]
-pub fn advance(s: &Spheres, pos: &mut [V3], vel: &mut [V3], spin: &mut [V3], force: &[V3], moment: &[V3], p: &Params, ledger: &mut Ledger) -> Option<usize> {
-    let (mut bad_in, mut bad_out) = (None, None);
-    for e in 0..s.len() {
-        let before = vel[e];
-        if bad_in.is_none() && !(pos[e].iter().chain(&vel[e]).chain(&spin[e]).all(|x| x.is_finite())) {
-            bad_in = Some(e);
+/// What one chunk's update adds to the ledger and where it saw a non-finite state.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Report {
+    /// Mass-proportional damping, J.
+    pub mass_damping_j: f64,
+    /// Work of loads and prescribed motions, J.
+    pub external_j: f64,
+    /// The first sphere that came into the step non-finite.
+    pub bad_in: Option<usize>,
+    /// The first sphere that left it non-finite.
+    pub bad_out: Option<usize>,
+}
+
+/// One chunk's rows of the per-sphere arrays, from sphere `base` on.
+pub struct Rows<'a> {
+    /// The chunk's first sphere.
+    pub base: usize,
+    /// Centres, m (advanced).
+    pub pos: &'a mut [V3],
+    /// Half-step velocities, m/s (advanced).
+    pub vel: &'a mut [V3],
+    /// Half-step spins, rad/s (advanced).
+    pub spin: &'a mut [V3],
+    /// Contact force sums, N.
+    pub force: &'a [V3],
+    /// Contact moment sums, N·m.
+    pub moment: &'a [V3],
+}
+
+/// Advance a chunk of spheres one step from their contact force and moment sums.
+pub fn advance(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
+    let Rows { base, pos, vel, spin, force, moment } = rows;
+    let mut r = Report::default();
+    let finite = |a: V3, b: V3, c: V3| a.iter().chain(&b).chain(&c).all(|x| x.is_finite());
+    for k in 0..pos.len() {
+        let e = base + k;
+        let before = vel[k];
+        if r.bad_in.is_none() && !finite(pos[k], vel[k], spin[k]) {
+            r.bad_in = Some(e);
         }
         if s.held[e] {
-            vel[e] = s.prescribed_mps[e];
-            spin[e] = [0.0; 3];
+            vel[k] = s.prescribed_mps[e];
+            spin[k] = [0.0; 3];
+            // A prescribed motion works against the contacts that push on it.
+            r.external_j -= dot(force[k], add(vel[k], before)) * 0.5 * p.dt_s;
         } else {
             let m = s.mass_kg[e];
-            let f = add(force[e], s.load_n[e]);
-            let (v, damped) = update(vel[e], scale(1.0 / m, f), p);
-            let (w, damped_w) = update(spin[e], scale(1.0 / s.inertia_kg_m2[e], add(moment[e], s.load_nm[e])), p);
-            ledger.mass_damping_j += m * damped + s.inertia_kg_m2[e] * damped_w;
+            let (v, damped) = update(vel[k], scale(1.0 / m, add(force[k], s.load_n[e])), p);
+            let (w, damped_w) = update(spin[k], scale(1.0 / s.inertia_kg_m2[e], add(moment[k], s.load_nm[e])), p);
+            r.mass_damping_j += m * damped + s.inertia_kg_m2[e] * damped_w;
             // Loads work on the mean of the two half-step velocities.
-            ledger.external_j += (dot(s.load_n[e], add(v, before)) + dot(s.load_nm[e], add(w, spin[e]))) * 0.5 * p.dt_s;
-            vel[e] = v;
-            spin[e] = w;
+            r.external_j += (dot(s.load_n[e], add(v, before)) + dot(s.load_nm[e], add(w, spin[k]))) * 0.5 * p.dt_s;
+            vel[k] = v;
+            spin[k] = w;
         }
-        if s.held[e] {
-            // A prescribed motion works against the contacts that push on it.
-            ledger.external_j -= dot(force[e], add(vel[e], before)) * 0.5 * p.dt_s;
-        }
-        pos[e] = add(pos[e], scale(p.dt_s, vel[e]));
-        if bad_out.is_none() && !(pos[e].iter().chain(&vel[e]).chain(&spin[e]).all(|x| x.is_finite())) {
-            bad_out = Some(e);
+        pos[k] = add(pos[k], scale(p.dt_s, vel[k]));
+        if r.bad_out.is_none() && !finite(pos[k], vel[k], spin[k]) {
+            r.bad_out = Some(e);
         }
     }
-    bad_in.or(bad_out)
+    r
 }

@@ -2,8 +2,10 @@
 //! seed 004, stepping as the 2D kernel does — contact processing, element motion, contact
 //! detection — under the same contract (`crate::simulation`, [`contract`]).
 //!
-//! Each contact's force and moments are added to its two spheres in contact order, so a step's
-//! result is one sum order on any thread count.
+//! On the pool, contacts are evaluated in parallel by fixed chunks and their actions then added
+//! to the spheres in contact order, and the spheres move by fixed chunks whose ledger shares are
+//! summed in chunk order: a step's bits are the same on any thread count (and on one thread,
+//! which takes the same chunks in turn).
 
 pub mod build;
 pub mod contact;
@@ -22,6 +24,8 @@ use contact::Contact;
 use law::{Class, Dissipation, Pair};
 use state::{Spheres, State};
 use vec3::{V3, add, dot, norm, sub};
+
+use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::kernel::Body;
@@ -47,12 +51,22 @@ pub struct Model {
     pub omega_bound_rad_per_s: f64,
     /// Gap below which pairs are candidates, m.
     pub skin_m: f64,
-    /// Where steps run (one thread for now: the result never depends on it).
+    /// Where steps run (the result never depends on it).
     pub threading: Threading,
+    /// Contacts from which the steps run on the pool.
+    pub parallel_min_contacts: usize,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
+    /// Each contact's action of this step (scratch).
+    pub(crate) actions: Vec<law::Action>,
 }
+
+/// Contacts, and spheres, per chunk: the unit of work on the pool and of the partial sums.
+pub const CHUNK: usize = 1024;
+
+/// Contacts from which a model steps on the pool by default (fewer: fork and join cost more).
+pub const PARALLEL_MIN_CONTACTS: usize = 8192;
 
 impl Model {
     /// Simulated time, s.
@@ -82,42 +96,80 @@ impl Model {
         Ok(())
     }
 
+    fn parallel(&self) -> bool {
+        self.threading == Threading::Pool && self.state.contacts.len() >= self.parallel_min_contacts && rayon::current_num_threads() > 1
+    }
+
     fn process_contacts(&mut self) {
+        let parallel = self.parallel();
         let (sp, st) = (&self.spheres, &mut self.state);
+        let (classes, dt) = (&self.classes, self.motion.dt_s);
         let n = sp.len();
+        self.actions.resize(st.contacts.len(), law::Action::default());
+        // Each chunk of contacts: its actions and its dissipation.
+        let (pos, vel, spin) = (&st.pos_m, &st.vel_mps, &st.spin_rad_per_s);
+        let one = |(cs, acts): (&mut [Contact], &mut [law::Action])| -> Dissipation {
+            let mut diss = Dissipation::default();
+            for (c, a) in cs.iter_mut().zip(acts) {
+                let (i, j) = (c.i as usize, c.j as usize);
+                let pair = Pair { r: [sp.radius_m[i], sp.radius_m[j]], dx_m: sub(pos[j], pos[i]), v: [vel[i], vel[j]], w: [spin[i], spin[j]] };
+                *a = law::act(c, &classes[c.class as usize], &pair, dt, &mut diss);
+            }
+            diss
+        };
+        let parts: Vec<Dissipation> = if parallel {
+            st.contacts.par_chunks_mut(CHUNK).zip(self.actions.par_chunks_mut(CHUNK)).map(one).collect()
+        } else {
+            st.contacts.chunks_mut(CHUNK).zip(self.actions.chunks_mut(CHUNK)).map(one).collect()
+        };
+        for d in &parts {
+            st.ledger.contacts.add(d);
+        }
+        // The actions added to the spheres in contact order.
         st.force_n.clear();
         st.force_n.resize(n, [0.0; 3]);
         st.moment_nm.clear();
         st.moment_nm.resize(n, [0.0; 3]);
-        let mut diss = Dissipation::default();
-        for c in st.contacts.iter_mut() {
+        for (c, a) in st.contacts.iter().zip(&self.actions) {
             let (i, j) = (c.i as usize, c.j as usize);
-            let pair = Pair {
-                r: [sp.radius_m[i], sp.radius_m[j]],
-                dx_m: sub(st.pos_m[j], st.pos_m[i]),
-                v: [st.vel_mps[i], st.vel_mps[j]],
-                w: [st.spin_rad_per_s[i], st.spin_rad_per_s[j]],
-            };
-            let a = law::act(c, &self.classes[c.class as usize], &pair, self.motion.dt_s, &mut diss);
             st.force_n[j] = add(st.force_n[j], a.force_j_n);
             st.force_n[i] = sub(st.force_n[i], a.force_j_n);
             st.moment_nm[i] = add(st.moment_nm[i], a.moment_i_nm);
             st.moment_nm[j] = add(st.moment_nm[j], a.moment_j_nm);
         }
-        st.ledger.contacts.add(&diss);
     }
 
     fn move_spheres(&mut self) -> Result<()> {
+        let parallel = self.parallel();
+        let (sp, p) = (&self.spheres, &self.motion);
         let st = &mut self.state;
-        let bad = integrate::advance(&self.spheres, &mut st.pos_m, &mut st.vel_mps, &mut st.spin_rad_per_s, &st.force_n, &st.moment_nm, &self.motion, &mut st.ledger);
-        if let Some(e) = bad {
-            let (p, v, w) = (st.pos_m[e], st.vel_mps[e], st.spin_rad_per_s[e]);
+        let rows = st
+            .pos_m
+            .chunks_mut(CHUNK)
+            .zip(st.vel_mps.chunks_mut(CHUNK))
+            .zip(st.spin_rad_per_s.chunks_mut(CHUNK))
+            .zip(st.force_n.chunks(CHUNK).zip(st.moment_nm.chunks(CHUNK)))
+            .enumerate()
+            .map(|(k, (((pos, vel), spin), (force, moment)))| integrate::Rows { base: k * CHUNK, pos, vel, spin, force, moment });
+        let reports: Vec<integrate::Report> = if parallel {
+            rows.collect::<Vec<_>>().into_par_iter().map(|r| integrate::advance(sp, r, p)).collect()
+        } else {
+            rows.map(|r| integrate::advance(sp, r, p)).collect()
+        };
+        let mut bad = (None, None);
+        for r in &reports {
+            st.ledger.mass_damping_j += r.mass_damping_j;
+            st.ledger.external_j += r.external_j;
+            bad = (bad.0.or(r.bad_in), bad.1.or(r.bad_out));
+        }
+        if let Some(e) = bad.0.or(bad.1) {
+            let (pos, v, w) = (st.pos_m[e], st.vel_mps[e], st.spin_rad_per_s[e]);
             return Err(Error::BlowUp {
                 step: st.steps,
                 time_s: st.steps as f64 * self.motion.dt_s,
                 element: e,
                 detail: format!(
-                    "sphere at {p:.3?} m, velocity {v:.3?} m/s, spin {w:.3?} rad/s is not finite (time step {:.4e} s; stability bound {:.4e} s)",
+                    "sphere at {pos:.3?} m, velocity {v:.3?} m/s, spin {w:.3?} rad/s is not finite (time step {:.4e} s; stability bound {:.4e} s)",
                     self.motion.dt_s, self.dt_bound_s
                 ),
             });
