@@ -20,6 +20,7 @@ use crate::material::{Arrangement, Material, Plane};
 use crate::shape::{Nose, Projectile};
 use crate::units::{fps_to_mps, in_to_m, lb_to_kg};
 
+pub mod block3d;
 pub mod simple;
 
 /// Elements per row of the benchmark block.
@@ -40,6 +41,8 @@ pub enum Workload {
     Block,
     /// Steel projectile at 1500 ft/s into the breakable block.
     Impact,
+    /// The 3D kernel: a vibrating fcc block of bonded spheres (`block3d`).
+    Block3d,
 }
 
 fn block_rect(columns: usize, rows: usize) -> (Rect, f64) {
@@ -221,6 +224,7 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
     // The block: one model per pool, warmed (caches, allocator) and then kept vibrating; the
     // impact: a fresh copy for every repeat, since it changes as it runs.
     let (mut kept, fresh, n) = match w {
+        Workload::Block3d => return Err(crate::error::Error::input("--workload", "block3d is measured by bench::block3d")),
         Workload::Block => {
             let built = workload(columns, rows)?;
             let mut kept = Vec::with_capacity(pools.len());

@@ -113,10 +113,11 @@ pub fn run(args: Args) -> Result<()> {
         return laws(&args);
     }
     let all = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1);
-    let threads = if args.threads.is_empty() { if all > 1 { vec![1, all] } else { vec![1] } } else { args.threads };
+    let threads = if args.threads.is_empty() { if all > 1 { vec![1, all] } else { vec![1] } } else { args.threads.clone() };
     let workloads: &[Workload] = match args.workload {
         Workload::Block => &[Workload::Block],
         Workload::Impact => &[Workload::Block, Workload::Impact],
+        Workload::Block3d => return block3d(&args, &threads),
     };
     let sizes: Vec<String> = args.size.iter().map(|(c, r)| format!("{c} × {r}")).collect();
     println!(
@@ -148,6 +149,18 @@ pub fn run(args: Args) -> Result<()> {
                 block = Some(figures);
             }
         }
+    }
+    Ok(())
+}
+
+/// The 3D kernel's block: ns per bond-step on each thread count.
+fn block3d(args: &Args, threads: &[usize]) -> Result<()> {
+    let side = 30.0;
+    let figures = bench::block3d::measure(side, args.steps, args.repeats, threads)?;
+    println!("demsweep bench --workload block3d: fcc block of side {side} R, every bond intact, rolling and twisting on, undamped; medians of {} rounds", args.repeats);
+    println!("threads  spheres  bonds   ns/bond-step  (min–max)");
+    for f in &figures {
+        println!("{:7}  {:7}  {:6}  {:12.2}  ({:.2}–{:.2})", f.threads, f.spheres, f.bonds, f.ns_per_bond_step, f.range_ns.0, f.range_ns.1);
     }
     Ok(())
 }
