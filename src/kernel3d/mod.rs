@@ -186,9 +186,13 @@ impl Model {
         }
     }
 
-    /// Search for candidate pairs now and merge them into the contact list.
+    /// Search for candidate pairs now and merge them into the contact list. Two held spheres
+    /// make no candidate: their motion is given, no free sphere feels their force, and it would
+    /// only stain the supports' reactions (walls of held spheres passing through each other).
     pub fn search(&mut self) {
-        let pairs = detect::candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m);
+        let held = &self.spheres.held;
+        let mut pairs = detect::candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m);
+        pairs.retain(|&(i, j)| !(held[i as usize] && held[j as usize]));
         let old = std::mem::take(&mut self.state.contacts);
         let classes = |i: u32, j: u32| self.class_of(i, j);
         let merged = detect::merge(old, &pairs, &self.state.pos_m, &self.spheres.radius_m, classes);
