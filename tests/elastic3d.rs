@@ -36,18 +36,7 @@ fn block(b: &Box3, p: &Packing, strain: [[f64; 3]; 3], springs: Option<(f64, f64
     let inner = inner_of(b, 4.0 * R);
     let bond_density = stiffness::bond_density(&p.centres_m, &p.radii_m, &p.bonds, |x| inner.contains(x), inner.volume_m3());
     let (kappa, alpha) = springs.unwrap_or_else(|| stiffness::springs(E, NU, bond_density).unwrap());
-    let class = Class {
-        bond_kn_pa: kappa,
-        bond_ks_pa: alpha * kappa,
-        bond_tension_pa: f64::INFINITY,
-        bond_shear_pa: f64::INFINITY,
-        bond_fracture_j_per_m2: f64::INFINITY,
-        kn_pa: kappa,
-        ks_pa: alpha * kappa,
-        mu: 0.5,
-        rolling: None,
-        twisting: None,
-    };
+    let class = Class::elastic(kappa, alpha, 0.5);
     let mut bld = Builder::new(1);
     bld.class(0, 0, class);
     let all = bld.body("block", &p.centres_m, &p.radii_m, 0, RHO);

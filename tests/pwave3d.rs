@@ -24,18 +24,7 @@ fn a_random_block_carries_a_p_wave_at_the_continuums_speed() {
     let inner = Box3 { x_min_m: 4.0 * R, x_max_m: depth - 4.0 * R, y_min_m: -width / 2.0 + 4.0 * R, y_max_m: width / 2.0 - 4.0 * R, z_min_m: -width / 2.0 + 4.0 * R, z_max_m: width / 2.0 - 4.0 * R };
     let bd = stiffness::bond_density(&p.centres_m, &p.radii_m, &p.bonds, |x| inner.contains(x), inner.volume_m3());
     let (kappa, alpha) = stiffness::springs(E, NU, bd).unwrap();
-    let class = Class {
-        bond_kn_pa: kappa,
-        bond_ks_pa: alpha * kappa,
-        bond_tension_pa: f64::INFINITY,
-        bond_shear_pa: f64::INFINITY,
-        bond_fracture_j_per_m2: f64::INFINITY,
-        kn_pa: kappa,
-        ks_pa: alpha * kappa,
-        mu: 0.5,
-        rolling: None,
-        twisting: None,
-    };
+    let class = Class::elastic(kappa, alpha, 0.5);
     let mut bld = Builder::new(1);
     bld.class(0, 0, class);
     let all = bld.body("block", &p.centres_m, &p.radii_m, 0, RHO);

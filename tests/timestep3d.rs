@@ -16,16 +16,9 @@ const R: f64 = 0.005;
 fn class() -> Class {
     let kappa = 60e9;
     Class {
-        bond_kn_pa: kappa,
-        bond_ks_pa: 0.3 * kappa,
-        bond_tension_pa: f64::INFINITY,
-        bond_shear_pa: f64::INFINITY,
-        bond_fracture_j_per_m2: f64::INFINITY,
-        kn_pa: kappa,
-        ks_pa: 0.3 * kappa,
-        mu: 0.5,
         rolling: Some(rolling::Params { kr_pa: 0.3 * kappa, eta: f64::INFINITY }),
         twisting: Some(twisting::Params { kt_pa: 0.15 * kappa, cap: twisting::Cap::None }),
+        ..Class::elastic(kappa, 0.3, 0.5)
     }
 }
 

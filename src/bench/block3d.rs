@@ -20,16 +20,9 @@ pub fn workload(side_r: f64) -> Result<Model> {
     let p = packing3d::fcc(&b, RADIUS_M)?;
     let kappa = 60e9;
     let class = Class {
-        bond_kn_pa: kappa,
-        bond_ks_pa: 0.25 * kappa,
-        bond_tension_pa: f64::INFINITY,
-        bond_shear_pa: f64::INFINITY,
-        bond_fracture_j_per_m2: f64::INFINITY,
-        kn_pa: kappa,
-        ks_pa: 0.25 * kappa,
-        mu: 0.5,
         rolling: Some(rolling::Params { kr_pa: 0.25 * kappa, eta: f64::INFINITY }),
         twisting: Some(twisting::Params { kt_pa: 0.125 * kappa, cap: twisting::Cap::None }),
+        ..Class::elastic(kappa, 0.25, 0.5)
     };
     let mut bld = Builder::new(1);
     bld.class(0, 0, class);

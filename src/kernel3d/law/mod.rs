@@ -45,6 +45,26 @@ pub struct Class {
     pub twisting: Option<twisting::Params>,
 }
 
+impl Class {
+    /// An elastic class: bonds of normal stiffness `kappa_n_pa` × r̄ and shear `alpha` times it
+    /// that never yield or break, frictional contacts with the same springs and Coulomb `mu`,
+    /// no moment transfer (`kernel3d::stiffness::springs` gives κ_n and α for E and ν).
+    pub fn elastic(kappa_n_pa: f64, alpha: f64, mu: f64) -> Class {
+        Class {
+            bond_kn_pa: kappa_n_pa,
+            bond_ks_pa: alpha * kappa_n_pa,
+            bond_tension_pa: f64::INFINITY,
+            bond_shear_pa: f64::INFINITY,
+            bond_fracture_j_per_m2: f64::INFINITY,
+            kn_pa: kappa_n_pa,
+            ks_pa: alpha * kappa_n_pa,
+            mu,
+            rolling: None,
+            twisting: None,
+        }
+    }
+}
+
 /// A class's springs and strengths at one contact of mean radius r̄.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Local {
