@@ -147,3 +147,25 @@ fn a_3d_impact_is_bitwise_the_same_on_1_2_and_8_threads() {
         assert_eq!(r.series, one.series);
     }
 }
+
+#[test]
+fn a_3d_model_is_written_to_vtk_as_spheres_with_their_radius_and_velocity() {
+    let mut built = impact();
+    built.model.run_steps(50).unwrap();
+    let m = &built.model;
+    let n = m.spheres.len();
+    let bytes = demsweep::picture::vtk::unstructured(m, &vec![0.0; n], m.bodies[1].elements.clone()).unwrap();
+    let text = String::from_utf8_lossy(&bytes);
+    assert!(text.contains(&format!("NumberOfPoints=\"{n}\"")), "{}", &text[..400.min(text.len())]);
+    for field in ["radius_m", "velocity_mps", "projectile", "supported", "damage"] {
+        assert!(text.contains(&format!("Name=\"{field}\"")), "{field} missing");
+    }
+    // The striker moves down the y axis at 150 m/s: its spheres' velocities are in the file.
+    let parsed = vtkio::Vtk::parse_xml(&bytes[..]).unwrap();
+    let vtkio::model::DataSet::UnstructuredGrid { pieces, .. } = parsed.data else { panic!("an unstructured grid") };
+    let vtkio::model::Piece::Inline(piece) = &pieces[0] else { panic!("inline") };
+    let points: Vec<f64> = piece.points.clone().cast_into().unwrap();
+    assert_eq!(points.len(), 3 * n);
+    let e = m.bodies[1].elements.start;
+    assert_eq!([points[3 * e], points[3 * e + 1], points[3 * e + 2]], m.state.pos_m[e]);
+}

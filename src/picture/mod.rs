@@ -11,7 +11,7 @@
 
 pub mod font;
 mod frame;
-mod vtk;
+pub mod vtk;
 
 use std::path::{Path, PathBuf};
 

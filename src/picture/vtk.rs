@@ -1,21 +1,24 @@
 //! The VTK side of a picture series: one XML unstructured grid per frame (a vertex per element
 //! with its radius, damage, body and velocity; in ParaView draw it with "Point Gaussian",
-//! scaled by `radius_m`), and the `.pvd` collection that orders the frames in time.
+//! scaled by `radius_m`), and the `.pvd` collection that orders the frames in time. A frame
+//! reads the model through `simulation::Bodies`, so the 2D discs and the 3D spheres are written
+//! alike.
 
 use std::ops::Range;
 
 use vtkio::model::{Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version, VertexNumbers, Vtk};
 
 use crate::error::{Error, Result};
-use crate::kernel::Model;
+use crate::simulation::Bodies;
 
-/// The frame as `.vtu` bytes.
-pub fn unstructured(m: &Model, damage: &[f64], projectile: Range<usize>) -> Result<Vec<u8>> {
-    let n = m.el.len();
-    let points: Vec<f64> = m.state.pos.iter().flat_map(|p| [p[0], p[1], 0.0]).collect();
-    let velocity: Vec<f64> = m.state.vel.iter().flat_map(|v| [v[0], v[1], 0.0]).collect();
+/// The frame as `.vtu` bytes: `damage` per element, `projectile` the elements flagged as it.
+pub fn unstructured(m: &(impl Bodies + ?Sized), damage: &[f64], projectile: Range<usize>) -> Result<Vec<u8>> {
+    let n = m.element_count();
+    let points: Vec<f64> = (0..n).flat_map(|e| m.position_m(e)).collect();
+    let velocity: Vec<f64> = (0..n).flat_map(|e| m.velocity_mps(e)).collect();
+    let radius: Vec<f64> = (0..n).map(|e| m.radius_m(e)).collect();
     let body: Vec<i32> = (0..n).map(|e| i32::from(projectile.contains(&e))).collect();
-    let supported: Vec<i32> = (0..n).map(|e| i32::from(m.el.is_fully_prescribed(e))).collect();
+    let supported: Vec<i32> = (0..n).map(|e| i32::from(m.held(e))).collect();
     let piece = UnstructuredGridPiece {
         points: points.into(),
         cells: Cells {
@@ -24,7 +27,7 @@ pub fn unstructured(m: &Model, damage: &[f64], projectile: Range<usize>) -> Resu
         },
         data: Attributes {
             point: vec![
-                Attribute::scalars("radius_m", 1).with_data(m.el.radius.clone()),
+                Attribute::scalars("radius_m", 1).with_data(radius),
                 Attribute::scalars("damage", 1).with_data(damage.to_vec()),
                 Attribute::scalars("projectile", 1).with_data(body),
                 Attribute::scalars("supported", 1).with_data(supported),
