@@ -60,6 +60,9 @@ pub struct Model {
     pub state: State,
     /// Each contact's action of this step (scratch).
     pub(crate) actions: Vec<law::Action>,
+    /// Each contact chunk's dissipation and each sphere chunk's ledger share of this step
+    /// (scratch: the step allocates nothing).
+    pub(crate) shares: (Vec<Dissipation>, Vec<integrate::Report>),
 }
 
 /// Contacts, and spheres, per chunk: the unit of work on the pool and of the partial sums.
@@ -117,12 +120,14 @@ impl Model {
             }
             diss
         };
-        let parts: Vec<Dissipation> = if parallel {
-            st.contacts.par_chunks_mut(CHUNK).zip(self.actions.par_chunks_mut(CHUNK)).map(one).collect()
+        let parts = &mut self.shares.0;
+        parts.resize(st.contacts.len().div_ceil(CHUNK), Dissipation::default());
+        if parallel {
+            st.contacts.par_chunks_mut(CHUNK).zip(self.actions.par_chunks_mut(CHUNK)).zip(parts.par_iter_mut()).for_each(|(c, d)| *d = one(c));
         } else {
-            st.contacts.chunks_mut(CHUNK).zip(self.actions.chunks_mut(CHUNK)).map(one).collect()
-        };
-        for d in &parts {
+            st.contacts.chunks_mut(CHUNK).zip(self.actions.chunks_mut(CHUNK)).zip(parts.iter_mut()).for_each(|(c, d)| *d = one(c));
+        }
+        for d in parts.iter() {
             st.ledger.contacts.add(d);
         }
         // The actions added to the spheres in contact order.
@@ -143,21 +148,32 @@ impl Model {
         let parallel = self.parallel();
         let (sp, p) = (&self.spheres, &self.motion);
         let st = &mut self.state;
-        let rows = st
-            .pos_m
-            .chunks_mut(CHUNK)
-            .zip(st.vel_mps.chunks_mut(CHUNK))
-            .zip(st.spin_rad_per_s.chunks_mut(CHUNK))
-            .zip(st.force_n.chunks(CHUNK).zip(st.moment_nm.chunks(CHUNK)))
-            .enumerate()
-            .map(|(k, (((pos, vel), spin), (force, moment)))| integrate::Rows { base: k * CHUNK, pos, vel, spin, force, moment });
-        let reports: Vec<integrate::Report> = if parallel {
-            rows.collect::<Vec<_>>().into_par_iter().map(|r| integrate::advance(sp, r, p)).collect()
-        } else {
-            rows.map(|r| integrate::advance(sp, r, p)).collect()
+        let reports = &mut self.shares.1;
+        reports.resize(sp.len().div_ceil(CHUNK), integrate::Report::default());
+        let one = |(k, ((((pos, vel), spin), (force, moment)), out)): (usize, ((((&mut [V3], &mut [V3]), &mut [V3]), (&[V3], &[V3])), &mut integrate::Report))| {
+            *out = integrate::advance(sp, integrate::Rows { base: k * CHUNK, pos, vel, spin, force, moment }, p);
         };
+        if parallel {
+            st.pos_m
+                .par_chunks_mut(CHUNK)
+                .zip(st.vel_mps.par_chunks_mut(CHUNK))
+                .zip(st.spin_rad_per_s.par_chunks_mut(CHUNK))
+                .zip(st.force_n.par_chunks(CHUNK).zip(st.moment_nm.par_chunks(CHUNK)))
+                .zip(reports.par_iter_mut())
+                .enumerate()
+                .for_each(one);
+        } else {
+            st.pos_m
+                .chunks_mut(CHUNK)
+                .zip(st.vel_mps.chunks_mut(CHUNK))
+                .zip(st.spin_rad_per_s.chunks_mut(CHUNK))
+                .zip(st.force_n.chunks(CHUNK).zip(st.moment_nm.chunks(CHUNK)))
+                .zip(reports.iter_mut())
+                .enumerate()
+                .for_each(one);
+        }
         let mut bad = (None, None);
-        for r in &reports {
+        for r in reports.iter() {
             st.ledger.mass_damping_j += r.mass_damping_j;
             st.ledger.external_j += r.external_j;
             bad = (bad.0.or(r.bad_in), bad.1.or(r.bad_out));
@@ -180,7 +196,10 @@ impl Model {
     fn detect_contacts(&mut self) {
         let half = 0.5 * self.skin_m;
         let st = &self.state;
-        let moved = st.pos_m.iter().zip(&st.searched_at_m).any(|(p, q)| norm(sub(*p, *q)) > half);
+        let moved = st.pos_m.iter().zip(&st.searched_at_m).any(|(p, q)| {
+            let d = sub(*p, *q);
+            dot(d, d) > half * half
+        });
         if moved {
             self.search();
         }
