@@ -199,7 +199,9 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
             if opening >= 0.0 {
                 // Apart: the history is forgotten, what the springs held booked where it went.
                 diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks;
-                diss.rolling_j += moments_j(c, &k);
+                let (rolling, twisting) = moments_split_j(c, &k);
+                diss.rolling_j += rolling;
+                diss.twisting_j += twisting;
                 c.forget(ri + rj);
                 c.normal = n;
                 return Action::default();
@@ -245,8 +247,14 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
 /// the moment M = k θ acts on both spheres and θ is half their relative turn (the moments'
 /// work is 2 M dθ).
 fn moments_j(c: &Contact, k: &Local) -> f64 {
+    let (rolling, twisting) = moments_split_j(c, k);
+    rolling + twisting
+}
+
+/// The rolling and the twisting spring's energy apart, J.
+fn moments_split_j(c: &Contact, k: &Local) -> (f64, f64) {
     let rolling = if k.kr > 0.0 { dot(c.rolling_nm, c.rolling_nm) / k.kr } else { 0.0 };
-    rolling + if k.kt > 0.0 { c.twisting_nm * c.twisting_nm / k.kt } else { 0.0 }
+    (rolling, if k.kt > 0.0 { c.twisting_nm * c.twisting_nm / k.kt } else { 0.0 })
 }
 
 /// Elastic energy the contact's springs hold, J, at centre distance `d_m` between spheres of
