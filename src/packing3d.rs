@@ -77,6 +77,30 @@ pub struct Packing {
     pub volume_m3: f64,
 }
 
+impl Packing {
+    /// The spheres for which `keep(centre, radius)` holds, with the bonds among them (indices
+    /// renumbered, order kept), standing for a solid of `volume_m3`: a shape cut from a
+    /// packing of its bounding box.
+    pub fn keep(&self, keep: impl Fn([f64; 3], f64) -> bool, volume_m3: f64) -> Packing {
+        let mut index = vec![u32::MAX; self.centres_m.len()];
+        let (mut centres_m, mut radii_m) = (Vec::new(), Vec::new());
+        for (k, (&c, &r)) in self.centres_m.iter().zip(&self.radii_m).enumerate() {
+            if keep(c, r) {
+                index[k] = centres_m.len() as u32;
+                centres_m.push(c);
+                radii_m.push(r);
+            }
+        }
+        let bonds = self
+            .bonds
+            .iter()
+            .map(|&(i, j)| (index[i as usize], index[j as usize]))
+            .filter(|&(i, j)| i != u32::MAX && j != u32::MAX)
+            .collect();
+        Packing { centres_m, radii_m, bonds, volume_m3 }
+    }
+}
+
 /// Relative tolerance on "touching" for the fcc lattice's bonds (× the radius).
 const TOUCH: f64 = 1e-9;
 

@@ -1,5 +1,5 @@
-//! A scene file as read: a kernel scene (`crate::scene`) or a penetration scene
-//! (`crate::penetration`), told apart by its tables, with the command line's `--set` applied.
+//! A scene file as read: a 2D kernel scene (`crate::scene`), a 3D one (`crate::scene3d`,
+//! `[scene] dim = 3`) or a penetration scene (`crate::penetration`), told apart by its tables, with the command line's `--set` applied.
 //! It sits above both, so that neither imports the other.
 
 use std::path::Path;
@@ -8,12 +8,15 @@ use crate::error::{Error, Result};
 use crate::penetration::PenetrationScene;
 use crate::scene::overrides::{Override, apply};
 use crate::scene::{Scene, parse};
+use crate::scene3d::Scene3;
 
 /// What a scene file describes.
 #[derive(Debug, Clone, PartialEq)]
 pub enum SceneFile {
-    /// A kernel scene: materials, bodies, groups, probes.
+    /// A 2D kernel scene: materials, bodies, groups, probes.
     Kernel(Scene),
+    /// A 3D kernel scene (`[scene] dim = 3`).
+    Kernel3(Scene3),
     /// A penetration scene (`[penetration]`), which builds its own kernel scene.
     Penetration(PenetrationScene),
 }
@@ -41,6 +44,8 @@ pub fn load_text(text: &str, origin: &Path, overrides: &[Override]) -> Result<Sc
         let p: PenetrationScene = parse(&text, origin).map_err(blame)?;
         p.validate().map_err(|e| blame(e.in_file(origin)))?;
         Ok(SceneFile::Penetration(p))
+    } else if doc.get("scene").and_then(|g| g.get("dim")).is_some() {
+        Ok(SceneFile::Kernel3(Scene3::from_toml(&text, origin).map_err(blame)?))
     } else {
         Ok(SceneFile::Kernel(Scene::from_toml(&text, origin).map_err(blame)?))
     }

@@ -108,8 +108,9 @@ impl Projectile {
         }
     }
 
-    /// True when a disk of radius `r` centred at (x, y) in the projectile's frame lies inside.
-    fn holds(&self, x: f64, y: f64, r: f64) -> bool {
+    /// True when a disk of radius `r` centred at (x, y) in the projectile's frame lies inside
+    /// (x across, y along the axis from the tail; in 3D, x is the distance from the axis).
+    pub(crate) fn holds(&self, x: f64, y: f64, r: f64) -> bool {
         let (w, l) = (self.width_m, self.length_m);
         if x.abs() > 0.5 * w - r + 1e-12 * w || y < r - 1e-12 * l || y > l - r + 1e-12 * l {
             return false;

@@ -21,6 +21,7 @@ use crate::shape::{Nose, Projectile};
 use crate::units::{fps_to_mps, in_to_m, lb_to_kg};
 
 pub mod block3d;
+pub mod impact3d;
 pub mod simple;
 
 /// Elements per row of the benchmark block.
@@ -43,6 +44,8 @@ pub enum Workload {
     Impact,
     /// The 3D kernel: a vibrating fcc block of bonded spheres (`block3d`).
     Block3d,
+    /// The 3D kernel: the example impact, `sweeps/impact3d.toml` (`impact3d`).
+    Impact3d,
 }
 
 fn block_rect(columns: usize, rows: usize) -> (Rect, f64) {
@@ -224,7 +227,9 @@ pub fn measure(w: Workload, columns: usize, rows: usize, steps: u64, repeats: us
     // The block: one model per pool, warmed (caches, allocator) and then kept vibrating; the
     // impact: a fresh copy for every repeat, since it changes as it runs.
     let (mut kept, fresh, n) = match w {
-        Workload::Block3d => return Err(crate::error::Error::input("--workload", "block3d is measured by bench::block3d")),
+        Workload::Block3d | Workload::Impact3d => {
+            return Err(crate::error::Error::input("--workload", "the 3D workloads are measured by bench::block3d and bench::impact3d"));
+        }
         Workload::Block => {
             let built = workload(columns, rows)?;
             let mut kept = Vec::with_capacity(pools.len());

@@ -118,6 +118,7 @@ pub fn run(args: Args) -> Result<()> {
         Workload::Block => &[Workload::Block],
         Workload::Impact => &[Workload::Block, Workload::Impact],
         Workload::Block3d => return block3d(&args, &threads),
+        Workload::Impact3d => return impact3d(&args, &threads),
     };
     let sizes: Vec<String> = args.size.iter().map(|(c, r)| format!("{c} × {r}")).collect();
     println!(
@@ -172,6 +173,25 @@ fn block3d(args: &Args, threads: &[usize]) -> Result<()> {
     println!("threads  spheres  bonds   ns/bond-step  (min–max)");
     for f in &figures {
         println!("{:7}  {:7}  {:6}  {:12.2}  ({:.2}–{:.2})", f.threads, f.spheres, f.bonds, f.ns_per_bond_step, f.range_ns.0, f.range_ns.1);
+    }
+    Ok(())
+}
+
+/// The 3D kernel's example impact: ns per contact-step on each thread count.
+fn impact3d(args: &Args, threads: &[usize]) -> Result<()> {
+    let figures = bench::impact3d::measure(args.steps, args.repeats, threads)?;
+    let m = bench::impact3d::workload()?;
+    println!(
+        "demsweep bench --workload impact3d: sweeps/impact3d.toml, its first {} steps ({:.3e} s of {} s), {} spheres; medians of {} rounds",
+        args.steps,
+        args.steps as f64 * m.motion.dt_s,
+        bench::impact3d::SCENE.lines().find_map(|l| l.strip_prefix("duration_s = ")).unwrap_or("?"),
+        m.spheres.len(),
+        args.repeats
+    );
+    println!("threads  contacts (mean)  bonds broken  ns/contact-step  (min–max)");
+    for f in &figures {
+        println!("{:7}  {:15.0}  {:12}  {:15.2}  ({:.2}–{:.2})", f.threads, f.mean_contacts, f.bonds_broken, f.ns_per_contact_step, f.range_ns.0, f.range_ns.1);
     }
     Ok(())
 }

@@ -7,6 +7,7 @@ use crate::error::{Error, Result};
 use crate::run::{Checkpointing, RunCheckpoint};
 use crate::scene::overrides::Override;
 use crate::scene_file::SceneFile;
+use crate::simulation::{Built, Simulation};
 use crate::table::Table;
 
 /// Arguments of `demsweep run`.
@@ -33,7 +34,7 @@ pub struct Args {
     #[arg(long)]
     pub resume: bool,
     /// Write pictures of the run into this folder: PNG frames and a VTK series (penetration
-    /// scenes).
+    /// scenes), a VTK series (3D scenes).
     #[arg(long, value_name = "DIR")]
     pub snapshots: Option<PathBuf>,
     /// Simulated time between pictures, ms.
@@ -41,9 +42,9 @@ pub struct Args {
     pub snapshot_every_ms: f64,
 }
 
-fn announce(name: &str, m: &crate::kernel::Model, steps: f64) {
-    let info = &m.step_info;
-    eprintln!("{name}: {} elements, {} contacts, Δt = {:.4e} s ({}), at most {steps} steps", m.el.len(), m.state.contacts.len(), info.dt_s, info.detail);
+fn announce<M: Simulation>(name: &str, m: &M, steps: f64) {
+    let t = m.tally();
+    eprintln!("{name}: {} elements, {} contacts, Δt = {:.4e} s ({}), at most {steps} steps", m.element_count(), m.contact_count(), t.dt_s, t.dt_limit);
 }
 
 fn print(summary: &Table, dir: &std::path::Path) {
@@ -58,7 +59,13 @@ fn print(summary: &Table, dir: &std::path::Path) {
 pub fn run(args: Args) -> Result<()> {
     let overrides: Vec<Override> = args.set.iter().map(|s| Override::parse(s)).collect::<Result<_>>()?;
     match crate::scene_file::load(&args.scene, &overrides)? {
-        SceneFile::Kernel(scene) => run_kernel(&args, scene),
+        SceneFile::Kernel(scene) => {
+            if args.snapshots.is_some() {
+                return Err(Error::input("--snapshots", "pictures are drawn of penetration scenes and 3D scenes"));
+            }
+            run_kernel(&args, scene.build().map_err(|e| e.in_file(&args.scene))?)
+        }
+        SceneFile::Kernel3(scene) => run_kernel(&args, scene.build().map_err(|e| e.in_file(&args.scene))?),
         SceneFile::Penetration(scene) => run_penetration(&args, scene),
     }
 }
@@ -81,7 +88,7 @@ fn run_penetration(args: &Args, scene: crate::penetration::scene::PenetrationSce
     let mut started = false;
     let mut frame = |m: &crate::kernel::Model| {
         if !std::mem::replace(&mut started, true) {
-            announce(&scene.penetration.name, m, (scene.penetration.max_time_s / m.dt_s()).ceil());
+            announce(&scene.penetration.name, m, (scene.penetration.max_time_s / Simulation::dt_s(m)).ceil());
         }
         match pictures.as_mut() {
             Some(p) => p.frame(m),
@@ -102,8 +109,8 @@ fn run_penetration(args: &Args, scene: crate::penetration::scene::PenetrationSce
     Ok(())
 }
 
-fn run_kernel(args: &Args, scene: crate::scene::Scene) -> Result<()> {
-    let built = scene.build().map_err(|e| e.in_file(&args.scene))?;
+/// Run a built kernel scene (either kernel); `--snapshots` writes a VTK series.
+fn run_kernel<M: Simulation>(args: &Args, built: Built<M>) -> Result<()> {
     let dir = args.out.join(&built.name);
     let checkpoint_path = dir.join("checkpoint.bin");
     let resume = match (args.resume, checkpoint_path.exists()) {
@@ -123,10 +130,35 @@ fn run_kernel(args: &Args, scene: crate::scene::Scene) -> Result<()> {
     let every_steps = args.checkpoint_every_steps;
     let checkpointing = (every_steps > 0).then_some(Checkpointing { every_steps, save: &mut save });
     let mut tick = |f: f64| bar.set_position((f * 1000.0) as u64);
-    let options = crate::run::Options { resume: resume.as_ref(), checkpointing, tick: Some(&mut tick), ..Default::default() };
+    let mut series = match &args.snapshots {
+        Some(d) => Some(crate::picture::vtk::Series::new(d)?),
+        None => None,
+    };
+    let every_s = args.snapshot_every_ms * 1e-3;
+    if !(every_s.is_finite() && every_s > 0.0) {
+        return Err(Error::input("--snapshot-every-ms", format!("must be a number > 0, got {}", args.snapshot_every_ms)));
+    }
+    // A frame at each record at least `every_s` after the last (records fall every
+    // `[output] every_steps`), and the last state.
+    let mut next_s = 0.0;
+    let mut frame = |m: &M| -> Result<()> {
+        match series.as_mut() {
+            Some(s) if m.time_s() >= next_s => {
+                next_s = m.time_s() + every_s;
+                s.frame(m).map(|_| ())
+            }
+            _ => Ok(()),
+        }
+    };
+    let observe: Option<crate::run::Observer<'_, M>> = if args.snapshots.is_some() { Some(&mut frame) } else { None };
+    let options = crate::run::Options { resume: resume.as_ref(), checkpointing, tick: Some(&mut tick), observe, ..Default::default() };
     let result = crate::run::run_with(built, options).map_err(|e| e.in_file(&checkpoint_path));
     bar.finish_and_clear();
     let result = result?;
+    if let Some(s) = series.as_mut() {
+        s.frame(&result.model)?;
+        eprintln!("{} frames in {}", s.frames().len(), args.snapshots.as_ref().expect("a series has a folder").display());
+    }
     let summary = result.summary_table();
     summary.write_csv(&dir.join("summary.csv"))?;
     result.series.write_csv(&dir.join("series.csv"))?;

@@ -13,6 +13,7 @@ pub mod contract;
 pub mod detect;
 pub mod integrate;
 pub mod law;
+pub mod solid;
 pub mod stability;
 pub mod state;
 pub mod stiffness;

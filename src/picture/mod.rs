@@ -7,7 +7,8 @@
 //! blue. The view is fixed by the scene (so frames line up), with a 12 in scale bar.
 //!
 //! Every file is written whole (temporary file and rename), the index after each frame, so an
-//! interrupted run leaves a readable series of the frames it reached.
+//! interrupted run leaves a readable series of the frames it reached. A 3D run writes the VTK
+//! series alone ([`vtk::Series`]).
 
 pub mod font;
 mod frame;
@@ -18,12 +19,12 @@ use std::path::{Path, PathBuf};
 use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
 use crate::kernel::Model;
-use crate::kernel::contact::Bond;
+use crate::simulation::Bodies;
 use crate::table::write_atomic;
 
 pub use frame::{View, render_png};
 
-/// What the frames share: the bonds each element started with, and the view.
+/// What the frames share: the bonds each element started with.
 #[derive(Debug, Clone)]
 pub struct Damage {
     /// Initially bonded pairs (i < j).
@@ -33,10 +34,11 @@ pub struct Damage {
 }
 
 impl Damage {
-    /// From the model at t = 0.
-    pub fn new(m: &Model) -> Damage {
-        let initial_bonds: Vec<(u32, u32)> = m.state.contacts.list.iter().filter(|c| c.bond == Bond::Intact).map(|c| (c.i, c.j)).collect();
-        let mut initial_count = vec![0u32; m.el.len()];
+    /// From the model at t = 0 (either kernel).
+    pub fn new(m: &(impl Bodies + ?Sized)) -> Damage {
+        let mut initial_bonds = Vec::new();
+        m.each_bond(&mut |i, j| initial_bonds.push((i.min(j) as u32, i.max(j) as u32)));
+        let mut initial_count = vec![0u32; m.element_count()];
         for &(i, j) in &initial_bonds {
             initial_count[i as usize] += 1;
             initial_count[j as usize] += 1;
@@ -45,14 +47,14 @@ impl Damage {
     }
 
     /// Per element, the fraction of its initial bonds that are broken; and the broken pairs.
-    pub fn now(&self, m: &Model) -> (Vec<f64>, Vec<(u32, u32)>) {
-        let mut intact = vec![0u32; m.el.len()];
+    pub fn now(&self, m: &(impl Bodies + ?Sized)) -> (Vec<f64>, Vec<(u32, u32)>) {
+        let mut intact = vec![0u32; m.element_count()];
         let mut alive = std::collections::HashSet::with_capacity(self.initial_bonds.len());
-        for c in m.state.contacts.list.iter().filter(|c| c.bond == Bond::Intact) {
-            intact[c.i as usize] += 1;
-            intact[c.j as usize] += 1;
-            alive.insert((c.i, c.j));
-        }
+        m.each_bond(&mut |i, j| {
+            intact[i] += 1;
+            intact[j] += 1;
+            alive.insert((i.min(j) as u32, i.max(j) as u32));
+        });
         let damage = self
             .initial_count
             .iter()
@@ -64,21 +66,19 @@ impl Damage {
     }
 }
 
-/// A series of pictures being written into one folder.
+/// A series of pictures of a penetration run being written into one folder: PNG frames beside
+/// the VTK series.
 pub struct Series {
     dir: PathBuf,
     view: View,
-    projectile: std::ops::Range<usize>,
-    damage: Option<Damage>,
+    vtk: vtk::Series,
     frames: Vec<(f64, String)>,
-    last_step: Option<u64>,
 }
 
 impl Series {
     /// A series for `scene` in `dir` (created; frames of an earlier series there are replaced).
     pub fn new(dir: &Path, scene: &PenetrationScene) -> Result<Series> {
-        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
-        Ok(Series { dir: dir.to_path_buf(), view: View::of(scene)?, projectile: 0..0, damage: None, frames: Vec::new(), last_step: None })
+        Ok(Series { dir: dir.to_path_buf(), view: View::of(scene)?, vtk: vtk::Series::new(dir)?, frames: Vec::new() })
     }
 
     /// Frames written so far: (time s, PNG file name).
@@ -88,24 +88,15 @@ impl Series {
 
     /// Draw the model (the first call must be at t = 0: it records the initial bonds).
     pub fn frame(&mut self, m: &Model) -> Result<()> {
-        if self.last_step == Some(m.steps()) {
+        let Some(damage) = self.vtk.frame(m)? else {
             return Ok(());
-        }
-        if self.damage.is_none() {
-            self.damage = Some(Damage::new(m));
-            self.projectile = m.body("projectile").map(|b| b.elements.clone()).unwrap_or(0..0);
-        }
-        let damage = self.damage.as_ref().expect("set above");
+        };
         let (d, broken) = damage.now(m);
-        let k = self.frames.len();
-        let png = format!("frame_{k:05}.png");
-        let vtu = format!("frame_{k:05}.vtu");
-        let bytes = render_png(&self.view, m, &d, &broken, self.projectile.clone()).map_err(|e| Error::io(self.dir.join(&png), e))?;
+        let png = format!("frame_{:05}.png", self.frames.len());
+        let bytes = render_png(&self.view, m, &d, &broken, self.vtk.projectile()).map_err(|e| Error::io(self.dir.join(&png), e))?;
         write_atomic(&self.dir.join(&png), &bytes)?;
-        write_atomic(&self.dir.join(&vtu), &vtk::unstructured(m, &d, self.projectile.clone())?)?;
         self.frames.push((m.time_s(), png));
-        self.last_step = Some(m.steps());
-        write_atomic(&self.dir.join("series.pvd"), vtk::collection(&self.frames).as_bytes())
+        Ok(())
     }
 
     /// The last frame (if the run's end was not drawn yet), and `final.png`, a copy of it.

@@ -8,8 +8,57 @@ use std::ops::Range;
 
 use vtkio::model::{Attribute, Attributes, ByteOrder, CellType, Cells, DataSet, UnstructuredGridPiece, Version, VertexNumbers, Vtk};
 
+use std::path::{Path, PathBuf};
+
+use super::Damage;
 use crate::error::{Error, Result};
 use crate::simulation::Bodies;
+use crate::table::write_atomic;
+
+/// A VTK series being written into one folder: `frame_NNNNN.vtu` and the `series.pvd` index,
+/// rewritten after each frame.
+pub struct Series {
+    dir: PathBuf,
+    damage: Option<Damage>,
+    projectile: Range<usize>,
+    frames: Vec<(f64, String)>,
+}
+
+impl Series {
+    /// A series in `dir` (created).
+    pub fn new(dir: &Path) -> Result<Series> {
+        std::fs::create_dir_all(dir).map_err(|e| Error::io(dir, e))?;
+        Ok(Series { dir: dir.to_path_buf(), damage: None, projectile: 0..0, frames: Vec::new() })
+    }
+
+    /// Frames written so far: (time s, `.vtu` file name).
+    pub fn frames(&self) -> &[(f64, String)] {
+        &self.frames
+    }
+
+    /// The elements of the body named `projectile` (none before the first frame).
+    pub fn projectile(&self) -> Range<usize> {
+        self.projectile.clone()
+    }
+
+    /// Write the model as the next frame unless its time was the last frame's (the first call
+    /// must be at t = 0: it records the initial bonds); the bonds damage is counted from.
+    pub fn frame(&mut self, m: &(impl Bodies + ?Sized)) -> Result<Option<&Damage>> {
+        if self.frames.last().is_some_and(|f| f.0 == m.time_s()) {
+            return Ok(None);
+        }
+        if self.damage.is_none() {
+            self.damage = Some(Damage::new(m));
+            self.projectile = m.body("projectile").unwrap_or(0..0);
+        }
+        let damage = self.damage.as_ref().expect("set above");
+        let vtu = format!("frame_{:05}.vtu", self.frames.len());
+        write_atomic(&self.dir.join(&vtu), &unstructured(m, &damage.now(m).0, self.projectile.clone())?)?;
+        self.frames.push((m.time_s(), vtu));
+        write_atomic(&self.dir.join("series.pvd"), collection(&self.frames).as_bytes())?;
+        Ok(Some(damage))
+    }
+}
 
 /// The frame as `.vtu` bytes: `damage` per element, `projectile` the elements flagged as it.
 pub fn unstructured(m: &(impl Bodies + ?Sized), damage: &[f64], projectile: Range<usize>) -> Result<Vec<u8>> {
@@ -48,11 +97,10 @@ pub fn unstructured(m: &(impl Bodies + ?Sized), damage: &[f64], projectile: Rang
     Ok(out)
 }
 
-/// The `.pvd` index of `frames` (time s, PNG name; the `.vtu` has the same stem).
+/// The `.pvd` index of `frames` (time s, `.vtu` name).
 pub fn collection(frames: &[(f64, String)]) -> String {
     let mut s = String::from("<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n");
-    for (t, png) in frames {
-        let vtu = png.replace(".png", ".vtu");
+    for (t, vtu) in frames {
         s.push_str(&format!("    <DataSet timestep=\"{t:.9e}\" group=\"\" part=\"0\" file=\"{vtu}\"/>\n"));
     }
     s.push_str("  </Collection>\n</VTKFile>\n");

@@ -11,6 +11,7 @@ use crate::scene_file::SceneFile;
 pub fn canonical(scene: &SceneFile) -> String {
     match scene {
         SceneFile::Kernel(s) => s.to_toml(),
+        SceneFile::Kernel3(s) => s.to_toml(),
         SceneFile::Penetration(p) => toml::to_string(p).expect("a penetration scene serialises"),
     }
 }

@@ -34,7 +34,7 @@ impl Base {
     pub fn level(&self) -> String {
         match &self.scene {
             SceneFile::Penetration(p) => p.penetration.level.to_string(),
-            SceneFile::Kernel(_) => String::new(),
+            SceneFile::Kernel(_) | SceneFile::Kernel3(_) => String::new(),
         }
     }
 }
@@ -80,11 +80,14 @@ pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Row> {
             let cells = crate::table::row::cells(&row).map_err(|e| Error::input("<row>", e))?;
             Ok(cells.into_iter().map(|(k, v)| (k, v.text())).collect())
         }
-        SceneFile::Kernel(scene) => {
-            let built = scene.build().map_err(|e| e.in_file(&base.path))?;
-            let options = crate::run::Options { threading: Threading::Serial, lend, ..Default::default() };
-            let t = crate::run::run_with(built, options)?.summary_table();
-            Ok(t.header.into_iter().zip(t.rows.into_iter().next().unwrap_or_default()).collect())
-        }
+        SceneFile::Kernel(scene) => kernel_row(scene.build().map_err(|e| e.in_file(&base.path))?, lend),
+        SceneFile::Kernel3(scene) => kernel_row(scene.build().map_err(|e| e.in_file(&base.path))?, lend),
     }
+}
+
+/// The summary row of a built kernel scene (either kernel), run to its duration.
+fn kernel_row<M: crate::simulation::Simulation + Clone + Sync>(built: crate::simulation::Built<M>, lend: Option<&dyn Lend>) -> Result<Row> {
+    let options = crate::run::Options { threading: Threading::Serial, lend, ..Default::default() };
+    let t = crate::run::run_with(built, options)?.summary_table();
+    Ok(t.header.into_iter().zip(t.rows.into_iter().next().unwrap_or_default()).collect())
 }

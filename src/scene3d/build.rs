@@ -1,0 +1,122 @@
+//! A 3D scene made into a model: each body's packing, its contact class from its material, the
+//! supports, loads and probes, and the step from the stability bound.
+//!
+//! Each body is its own sphere kind, so that its class is computed on its own packing's bond
+//! density: B of the packing recipe (random dense, the body's seed and bond gap ratio) measured
+//! on a reference cube of side [`REFERENCE_SIDE_R`] R, 3 R in from its faces. B is
+//! dimensionless and fixed by the recipe, not by the body's size or shape, so a body of any
+//! size or outline gets the same material (`kernel3d::stiffness`).
+
+use std::sync::Arc;
+
+use super::{Packing3, Scene3};
+use crate::error::{Error, Result};
+use crate::kernel3d::law::Class;
+use crate::kernel3d::{Builder, Model, solid, stiffness};
+use crate::packing3d::{self, Box3, Packing};
+use crate::simulation::{Built, Measure};
+
+/// Side of the reference cube a packing recipe's bond density is measured on, × R.
+pub const REFERENCE_SIDE_R: f64 = 20.0;
+
+/// The bond density B of random dense packings of mean radius `radius_m`, `seed` and
+/// `bond_gap_ratio` (dimensionless).
+pub fn recipe_bond_density(radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<f64> {
+    let s = REFERENCE_SIDE_R * radius_m;
+    let cube = Box3 { x_min_m: 0.0, x_max_m: s, y_min_m: 0.0, y_max_m: s, z_min_m: 0.0, z_max_m: s };
+    let p = packing3d::random_dense(&cube, radius_m, seed, bond_gap_ratio)?;
+    let m = 3.0 * radius_m;
+    let inner = Box3 { x_min_m: m, x_max_m: s - m, y_min_m: m, y_max_m: s - m, z_min_m: m, z_max_m: s - m };
+    Ok(stiffness::bond_density(&p.centres_m, &p.radii_m, &p.bonds, |x| inner.contains(x), inner.volume_m3()))
+}
+
+impl Scene3 {
+    /// Build the model and its probes.
+    pub fn build(&self) -> Result<Built<Model>> {
+        let kinds = self.body.len();
+        let mut packings: Vec<Packing> = Vec::with_capacity(kinds);
+        let mut classes: Vec<Class> = Vec::with_capacity(kinds);
+        for (k, b) in self.body.iter().enumerate() {
+            let at = |e: Error| match e {
+                Error::Input { file, field, message } => Error::Input { file, field: format!("body[{k}].{field}"), message },
+                other => other,
+            };
+            let Packing3::RandomDense = b.packing;
+            let p = match (&b.region, &b.shape) {
+                (Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                (None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
+                (None, None) => unreachable!("validated: a box or a shape"),
+            }
+            .map_err(at)?;
+            let material = self.material.iter().find(|m| m.name == b.material).expect("validated: the material exists");
+            let bd = recipe_bond_density(b.element_radius_m, b.seed, b.bond_gap_ratio).map_err(at)?;
+            let r_max = p.radii_m.iter().copied().fold(0.0, f64::max);
+            classes.push(material.class(bd, r_max)?);
+            packings.push(p);
+        }
+        let mut bld = Builder::new(kinds);
+        for a in 0..kinds {
+            for b in a..kinds {
+                bld.class(a, b, if a == b { classes[a].clone() } else { solid::between(&classes[a], &classes[b]) });
+            }
+        }
+        let mut velocities = Vec::with_capacity(kinds);
+        for (k, (b, p)) in self.body.iter().zip(&packings).enumerate() {
+            let material = self.material.iter().find(|m| m.name == b.material).expect("validated");
+            let range = bld.body(&b.name, &p.centres_m, &p.radii_m, k as u16, material.density_kg_per_m3);
+            bld.mass_total(range.clone(), material.density_kg_per_m3 * p.volume_m3);
+            for &(i, j) in &p.bonds {
+                bld.bond(range.start + i as usize, range.start + j as usize);
+            }
+            velocities.push((range, b.velocity_mps));
+        }
+        let centres: Vec<[f64; 3]> = packings.iter().flat_map(|p| p.centres_m.iter().copied()).collect();
+        let inside = |b: &Box3| -> Vec<usize> { (0..centres.len()).filter(|&e| b.contains(centres[e])).collect() };
+        let mut held = vec![false; centres.len()];
+        for (k, f) in self.fix.iter().enumerate() {
+            let group = inside(&f.region);
+            if group.is_empty() {
+                return Err(Error::input(format!("fix[{k}].box"), "holds no sphere centre"));
+            }
+            for e in group {
+                bld.hold(e, f.velocity_mps);
+                held[e] = true;
+            }
+        }
+        for (k, l) in self.load.iter().enumerate() {
+            let group: Vec<usize> = inside(&l.region).into_iter().filter(|&e| !held[e]).collect();
+            if group.is_empty() {
+                return Err(Error::input(format!("load[{k}].box"), "holds no free sphere centre"));
+            }
+            let share = l.force_n.map(|f| f / group.len() as f64);
+            for e in group {
+                bld.load(e, share, [0.0; 3]);
+            }
+        }
+        let mut probes: Vec<Arc<dyn Measure<Model>>> = Vec::with_capacity(self.probe.len());
+        for (k, p) in self.probe.iter().enumerate() {
+            let mut p = p.clone();
+            if let Some(b) = &p.region {
+                p.spheres = inside(b);
+                if p.spheres.is_empty() {
+                    return Err(Error::input(format!("probe[{k}].box"), "holds no sphere centre"));
+                }
+            }
+            probes.push(Arc::new(p));
+        }
+        let t = &self.time_step;
+        bld.alpha_per_s = self.damping.alpha_per_s;
+        bld.safety = t.safety;
+        bld.skin_ratio = t.skin_ratio;
+        bld.dt_s = t.dt_s;
+        let model = bld.build(&velocities)?;
+        if model.motion.dt_s > model.dt_bound_s {
+            return Err(Error::input(
+                "time_step.dt_s",
+                format!("{:.4e} s is above the stability bound {:.4e} s of this scene's contacts", model.motion.dt_s, model.dt_bound_s),
+            ));
+        }
+        let every_steps = self.output.every_steps;
+        Ok(Built { name: self.scene.name.clone(), model, probes, duration_s: self.scene.duration_s, every_steps })
+    }
+}
