@@ -73,7 +73,7 @@ impl PartsVisitor for Both<'_> {
             let d = &mut r_partial[e / CHUNK];
             r_force[e] = match forces::kinematics(pos, vel, c, k) {
                 Ok(g) if c.bond == Bond::Intact => {
-                    let vn = RateField::normal_velocity_mps(&m.rate_field.vel_mps, c.i, c.j, g.nx, g.ny, g.vn_mps);
+                    let vn = RateField::normal_velocity_mps(&m.rate_field.vel_mps, c.i, c.j, [g.nx, g.ny], g.vn_mps);
                     let ratios = law::bond_ratios::<P>(x, k, vn);
                     law::bonded_at::<P>(c, x, k, &g, ratios, dt_s, d)
                 }

@@ -15,7 +15,7 @@ use demsweep::table::{Table, row::cells};
 fn scene() -> demsweep::penetration::scene::PenetrationScene {
     match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration_ci.toml"), &[]).unwrap() {
         SceneFile::Penetration(p) => p,
-        SceneFile::Kernel(_) => panic!("the CI scene is a penetration scene"),
+        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => panic!("the CI scene is a penetration scene"),
     }
 }
 
@@ -23,7 +23,7 @@ fn scene() -> demsweep::penetration::scene::PenetrationScene {
 fn the_ci_scene_is_the_calibrated_scene_one_level_down() {
     let full = match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration.toml"), &[]).unwrap() {
         SceneFile::Penetration(p) => p,
-        SceneFile::Kernel(_) => panic!(),
+        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => panic!("a penetration scene"),
     };
     let ci = scene();
     assert_eq!((full.penetration.level, ci.penetration.level), (1, 0));

@@ -426,7 +426,7 @@ fn first_half<P: PartSet>(at: &StepInput<'_>, c: &Contact, x: &mut Extra) -> Ahe
     let s = separation(at.pos, c);
     if c.bond == Bond::Intact {
         let g = along(at.vel, c, k, geometry::of(s));
-        let vn_rate = if P::RATE { RateField::normal_velocity_mps(at.rate_vel, c.i, c.j, g.nx, g.ny, g.vn_mps) } else { g.vn_mps };
+        let vn_rate = if P::RATE { RateField::normal_velocity_mps(at.rate_vel, c.i, c.j, [g.nx, g.ny], g.vn_mps) } else { g.vn_mps };
         Ahead::Bond(g, law::bond_ratios::<P>(x, k, vn_rate))
     } else if law::friction::idle(c.ut_m, c.rest_m, k.radius_sum_m, s.d2_m2) {
         Ahead::Nothing

@@ -154,7 +154,7 @@ pub struct Model {
     pub lane_width: lanes::Width,
     /// The rate part's smoothed velocity field (`law::rate_field`): its grid is configuration,
     /// its values are remade from the state at every step.
-    pub rate_field: law::rate_field::RateField,
+    pub rate_field: law::rate_field::RateField<2>,
     // What stepping changes.
     /// The evolving state.
     pub state: State,

@@ -23,7 +23,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
-use crate::material::{Arrangement, Material, Plane};
+use crate::material::{Arrangement, CompactionSpec, Material, Plane};
 
 
 /// Per contact class.
@@ -54,13 +54,9 @@ pub fn critical_force_n(m: &Material, plane: Plane, arrangement: Arrangement, ra
 impl Params {
     /// Parameters between two materials (on when both compact): the weaker critical force,
     /// the softer yield line and the smaller full-compaction strain.
-    pub fn between(
-        a: (&Material, f64),
-        b: (&Material, f64),
-        kn_n_per_m: f64,
-    ) -> Params {
-        let ((ma, fa), (mb, fb)) = (a, b);
-        let (Some(ca), Some(cb)) = (ma.compaction, mb.compaction) else { return Params::default() };
+    /// Each side is a material's compaction law (if any) and its bond's critical force, N.
+    pub fn between(a: (Option<CompactionSpec>, f64), b: (Option<CompactionSpec>, f64), kn_n_per_m: f64) -> Params {
+        let ((Some(ca), fa), (Some(cb), fb)) = (a, b) else { return Params::default() };
         Params {
             enabled: true,
             critical_force_n: fa.min(fb),

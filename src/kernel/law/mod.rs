@@ -116,7 +116,7 @@ impl ContactClass {
         };
         let fc = |s: Side<'_>| -> Result<f64> { compaction::critical_force_n(s.material, ctx.plane, s.arrangement, r, t) };
         let compaction = if ma.compaction.is_some() && mb.compaction.is_some() {
-            compaction::Params::between((ma, fc(a)?), (mb, fc(b)?), bond.kn_n_per_m)
+            compaction::Params::between((ma.compaction, fc(a)?), (mb.compaction, fc(b)?), bond.kn_n_per_m)
         } else {
             compaction::Params::default()
         };
@@ -128,7 +128,7 @@ impl ContactClass {
             lever_i: a.radius_m / sum,
             lever_j: b.radius_m / sum,
             damping: damping::Params::new(ctx.beta_s, bond, contact.springs),
-            rate: rate::Params::between(ma, mb, sum, ctx.max_speed_mps, gf_area_j),
+            rate: rate::Params::between(rate::Source::of(ma), rate::Source::of(mb), sum, ctx.max_speed_mps, gf_area_j),
             compaction,
         })
     }

@@ -270,6 +270,32 @@ pub fn exact(rate_per_s: f64, youngs_modulus_pa: f64, tensile_pa: f64, compressi
     ]
 }
 
+/// What the rate laws read of one material (2D or 3D): its modulus, its static strengths and
+/// its rate law.
+#[derive(Debug, Clone, Copy)]
+pub struct Source<'a> {
+    /// Young's modulus E, Pa.
+    pub youngs_modulus_pa: f64,
+    /// Static tensile strength σ_ult, Pa.
+    pub tensile_strength_pa: f64,
+    /// Static compressive strength f'c, Pa.
+    pub compressive_strength_pa: f64,
+    /// The rate law.
+    pub spec: &'a RateSpec,
+}
+
+impl<'a> Source<'a> {
+    /// A 2D material's (None: no rate law).
+    pub fn of(m: &'a crate::material::Material) -> Option<Source<'a>> {
+        m.rate.as_ref().map(|spec| Source {
+            youngs_modulus_pa: m.youngs_modulus_pa,
+            tensile_strength_pa: m.tensile_strength_pa,
+            compressive_strength_pa: m.compressive_strength_pa,
+            spec,
+        })
+    }
+}
+
 /// Per contact class: the tabulated laws, the cap and the memory of the held rate.
 #[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
 pub struct Params {
@@ -296,14 +322,9 @@ impl Params {
     /// Parameters between two materials: on when both have a rate law. Each ratio is the
     /// smaller of the two materials' (the weaker side sets a bond's strength, as the static
     /// strengths do). `radius_sum_m` sets the default cap with `max_speed_mps`.
-    pub fn between(
-        a: &crate::material::Material,
-        b: &crate::material::Material,
-        radius_sum_m: f64,
-        max_speed_mps: f64,
-        gf_area_j: f64,
-    ) -> Params {
-        let (Some(ra), Some(rb)) = (a.rate, b.rate) else { return Params::default() };
+    pub fn between(a: Option<Source<'_>>, b: Option<Source<'_>>, radius_sum_m: f64, max_speed_mps: f64, gf_area_j: f64) -> Params {
+        let (Some(a), Some(b)) = (a, b) else { return Params::default() };
+        let (ra, rb) = (a.spec, b.spec);
         let cap = match (ra.cap_per_s, rb.cap_per_s) {
             (Some(x), Some(y)) => x.min(y),
             (Some(x), None) | (None, Some(x)) => x,
@@ -314,15 +335,15 @@ impl Params {
                 None => (max_speed_mps / radius_sum_m).max(1.0),
             },
         };
-        let f = |m: &crate::material::Material, s: &RateSpec, rate: f64| exact(rate, m.youngs_modulus_pa, m.tensile_strength_pa, m.compressive_strength_pa, s);
-        let mut kinks = kinks_per_s(a.youngs_modulus_pa, a.tensile_strength_pa, &ra).to_vec();
-        for k in kinks_per_s(b.youngs_modulus_pa, b.tensile_strength_pa, &rb) {
+        let f = |m: &Source<'_>, rate: f64| exact(rate, m.youngs_modulus_pa, m.tensile_strength_pa, m.compressive_strength_pa, m.spec);
+        let mut kinks = kinks_per_s(a.youngs_modulus_pa, a.tensile_strength_pa, ra).to_vec();
+        for k in kinks_per_s(b.youngs_modulus_pa, b.tensile_strength_pa, rb) {
             if !kinks.iter().any(|&x| (x / k - 1.0).abs() < 1e-9) {
                 kinks.push(k);
             }
         }
         let table = Table::new(cap, &kinks, |rate| {
-            let (x, y) = (f(a, &ra, rate), f(b, &rb, rate));
+            let (x, y) = (f(&a, rate), f(&b, rate));
             [x[0].min(y[0]), x[1].min(y[1]), x[2].min(y[2]), x[3].min(y[3])]
         });
         Params {
@@ -373,6 +394,14 @@ impl Params {
     /// The brittle criteria keep their static opening (0).
     #[inline(always)]
     pub fn opening_at_break_m(&self, static_opening_m: f64, static_plateau_n: f64, xi: f64, kn: f64) -> f64 {
-        if self.gf_area_j > 0.0 { (self.gf_area_j / static_plateau_n - 0.5 * xi * static_plateau_n / kn).max(0.0) } else { static_opening_m }
+        if self.gf_area_j > 0.0 { dynamic_opening_m(self.gf_area_j, static_plateau_n, xi, kn) } else { static_opening_m }
     }
+}
+
+/// The energy criterion's plastic opening at break with the tensile ratio ξ (eq 5.7 with
+/// eq 6.10): G_f A / f_n − ξ f_n / (2 k_n) for G_f A = `gf_area_j` (J), the static plateau f_n
+/// (N) and the rate-enhanced stiffness `kn` (N/m); never negative.
+#[inline(always)]
+pub fn dynamic_opening_m(gf_area_j: f64, static_plateau_n: f64, xi: f64, kn: f64) -> f64 {
+    (gf_area_j / static_plateau_n - 0.5 * xi * static_plateau_n / kn).max(0.0)
 }

@@ -30,117 +30,160 @@
 //! do not depend on the thread count, and it is remade every step from the state, so a
 //! restored checkpoint continues bit for bit without storing it.
 
-use serde::{Deserialize, Serialize};
-
-/// The smoothed velocity field of the elements whose material measures its rate over a length.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-pub struct RateField {
+/// The smoothed velocity field of the elements whose material measures its rate over a length,
+/// in `D` dimensions (2: the 2D kernel's discs, 3: the 3D kernel's spheres; the same transfer,
+/// bilinear or trilinear).
+#[derive(Debug, Clone, PartialEq)]
+pub struct RateField<const D: usize> {
     // Configuration, fixed when the model is built.
     /// Grid spacing h = ℓ/2, m.
     pub spacing_m: f64,
     /// 1/h, 1/m.
     inv_spacing: f64,
-    /// The grid's lower-left node, m.
-    origin_m: [f64; 2],
-    /// Nodes along x and y.
-    nodes_x: usize,
-    nodes_y: usize,
+    /// The grid's lowest node, m.
+    origin_m: [f64; D],
+    /// Nodes along each axis.
+    nodes: [usize; D],
+    /// Index step of a node along each axis (1, then the product of the nodes before).
+    strides: [usize; D],
     /// The elements smoothed, in index order.
     members: Vec<u32>,
     // Scratch, remade every step.
-    /// Per node: Σ w m vx (kg·m/s), Σ w m vy (kg·m/s), Σ w m (kg); then, for nodes with
-    /// mass, the node's velocity (m/s) in the first two.
-    sums: Vec<[f64; 3]>,
+    /// Per node: (Σ w m v (kg·m/s), Σ w m (kg)); then, for nodes with mass, the node's
+    /// velocity (m/s) in the first.
+    sums: Vec<([f64; D], f64)>,
     /// Per member: its cell and weights, as the transfer to the grid found them.
-    #[serde(skip)]
-    cells: Vec<Option<(usize, [f64; 4])>>,
-    /// Per element: its smoothed velocity [vx, vy], m/s (its own for elements outside the
-    /// grid; 0 for elements not smoothed, whose bonds carry no averaged rate); empty when no
-    /// element is smoothed.
-    pub vel_mps: Vec<[f64; 2]>,
+    cells: Vec<Option<(usize, [f64; 8])>>,
+    /// Per element: its smoothed velocity, m/s (its own for elements outside the grid; 0 for
+    /// elements not smoothed, whose bonds carry no averaged rate); empty when no element is
+    /// smoothed.
+    pub vel_mps: Vec<[f64; D]>,
 }
 
-impl RateField {
+impl<const D: usize> Default for RateField<D> {
+    fn default() -> Self {
+        RateField::new(Vec::new(), &[], 0, f64::INFINITY)
+    }
+}
+
+impl<const D: usize> RateField<D> {
+    /// The 2^D corners of a cell.
+    const CORNERS: usize = 1 << D;
+
     /// A field over `members` (element indices, ascending) at their initial positions
     /// `initial` with averaging length `length_m`, for a model of `elements` elements. The grid
-    /// covers their extent plus half of its larger side each way (room for the target to bend
+    /// covers their extent plus half of its largest side each way (room for the target to bend
     /// and a plug to be pushed out).
-    pub fn new(members: Vec<u32>, initial: &[[f64; 2]], elements: usize, length_m: f64) -> RateField {
+    pub fn new(members: Vec<u32>, initial: &[[f64; D]], elements: usize, length_m: f64) -> RateField<D> {
+        assert!(D == 2 || D == 3, "a rate field is 2D or 3D");
         let h = 0.5 * length_m;
-        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
         for &e in &members {
             let p = initial[e as usize];
-            for a in 0..2 {
+            for a in 0..D {
                 lo[a] = lo[a].min(p[a]);
                 hi[a] = hi[a].max(p[a]);
             }
         }
-        let margin = 0.5 * (hi[0] - lo[0]).max(hi[1] - lo[1]) + 2.0 * h;
-        let origin_m = [lo[0] - margin, lo[1] - margin];
-        let count = |a: usize| ((hi[a] + margin - origin_m[a]) / h).ceil() as usize + 1;
-        let members_empty = members.is_empty();
-        let (nodes_x, nodes_y) = if members_empty { (0, 0) } else { (count(0), count(1)) };
-        RateField { spacing_m: h, inv_spacing: 1.0 / h, cells: Vec::new(), origin_m, nodes_x, nodes_y, members, sums: vec![[0.0; 3]; nodes_x * nodes_y], vel_mps: if members_empty { Vec::new() } else { vec![[0.0; 2]; elements] } }
-    }
-
-    /// The cell of `p` and the weights of its four nodes (lower-left, lower-right, upper-left,
-    /// upper-right), or None outside the grid.
-    #[inline(always)]
-    fn cell(&self, p: [f64; 3]) -> Option<(usize, [f64; 4])> {
-        let (fx, fy) = ((p[0] - self.origin_m[0]) * self.inv_spacing, (p[1] - self.origin_m[1]) * self.inv_spacing);
-        // Also refuses NaN.
-        if !(fx >= 0.0 && fy >= 0.0 && fx < (self.nodes_x - 1) as f64 && fy < (self.nodes_y - 1) as f64) {
-            return None;
+        let side = (0..D).map(|a| hi[a] - lo[a]).fold(f64::NEG_INFINITY, f64::max);
+        let margin = 0.5 * side + 2.0 * h;
+        let origin_m: [f64; D] = std::array::from_fn(|a| lo[a] - margin);
+        let empty = members.is_empty();
+        let nodes: [usize; D] = std::array::from_fn(|a| if empty { 0 } else { ((hi[a] + margin - origin_m[a]) / h).ceil() as usize + 1 });
+        let mut strides = [1usize; D];
+        for a in 1..D {
+            strides[a] = strides[a - 1] * nodes[a - 1];
         }
-        let (ix, iy) = (fx as usize, fy as usize);
-        let (wx, wy) = (fx - ix as f64, fy - iy as f64);
-        Some((iy * self.nodes_x + ix, [(1.0 - wx) * (1.0 - wy), wx * (1.0 - wy), (1.0 - wx) * wy, wx * wy]))
+        let count: usize = nodes.iter().product();
+        RateField {
+            spacing_m: h,
+            inv_spacing: 1.0 / h,
+            cells: Vec::new(),
+            origin_m,
+            nodes,
+            strides,
+            members,
+            sums: vec![([0.0; D], 0.0); if empty { 0 } else { count }],
+            vel_mps: if empty { Vec::new() } else { vec![[0.0; D]; elements] },
+        }
     }
 
-    /// Remake the field from positions `pos`, half-step velocities `vel` and masses `mass`.
+    /// The cell of `p` and the weights of its corners (corner c takes, along axis a, the upper
+    /// node when bit a of c is set: lower-left, lower-right, upper-left, upper-right in 2D), or
+    /// None outside the grid.
+    #[inline(always)]
+    fn cell(&self, p: [f64; 3]) -> Option<(usize, [f64; 8])> {
+        let mut base = 0;
+        let mut frac = [0.0; D];
+        for a in 0..D {
+            let f = (p[a] - self.origin_m[a]) * self.inv_spacing;
+            // Also refuses NaN.
+            if !(f >= 0.0 && f < (self.nodes[a] - 1) as f64) {
+                return None;
+            }
+            let i = f as usize;
+            base += i * self.strides[a];
+            frac[a] = f - i as f64;
+        }
+        let mut w = [0.0; 8];
+        for (c, wc) in w.iter_mut().enumerate().take(Self::CORNERS) {
+            *wc = (0..D).fold(1.0, |acc, a| acc * if c >> a & 1 == 1 { frac[a] } else { 1.0 - frac[a] });
+        }
+        Some((base, w))
+    }
+
+    /// The node of corner `c` of the cell at `base`.
+    #[inline(always)]
+    fn corner(&self, base: usize, c: usize) -> usize {
+        (0..D).fold(base, |k, a| if c >> a & 1 == 1 { k + self.strides[a] } else { k })
+    }
+
+    /// Remake the field from positions `pos`, half-step velocities `vel` and masses `mass`
+    /// (the first D components of each).
     pub fn update(&mut self, pos: &[[f64; 3]], vel: &[[f64; 3]], mass: &[f64]) {
         if self.members.is_empty() {
             return;
         }
-        self.sums.iter_mut().for_each(|s| *s = [0.0; 3]);
+        self.sums.iter_mut().for_each(|s| *s = ([0.0; D], 0.0));
         self.cells.clear();
-        let nx = self.nodes_x;
         for &e in &self.members {
             let e = e as usize;
             let c = self.cell(pos[e]);
             if let Some((k, w)) = c {
                 let (m, v) = (mass[e], vel[e]);
-                for (node, wn) in [k, k + 1, k + nx, k + nx + 1].into_iter().zip(w) {
+                for (corner, &wn) in w.iter().enumerate().take(Self::CORNERS) {
+                    let node = self.corner(k, corner);
                     let s = &mut self.sums[node];
                     let wm = wn * m;
-                    s[0] += wm * v[0];
-                    s[1] += wm * v[1];
-                    s[2] += wm;
+                    for a in 0..D {
+                        s.0[a] += wm * v[a];
+                    }
+                    s.1 += wm;
                 }
             }
             self.cells.push(c);
         }
         // Node momenta become node velocities once, not once per element that reads them.
         for s in &mut self.sums {
-            if s[2] > 0.0 {
-                let inv = 1.0 / s[2];
-                s[0] *= inv;
-                s[1] *= inv;
+            if s.1 > 0.0 {
+                let inv = 1.0 / s.1;
+                s.0.iter_mut().for_each(|x| *x *= inv);
             }
         }
         for (&e, c) in self.members.iter().zip(&self.cells) {
             let e = e as usize;
             let v = vel[e];
             self.vel_mps[e] = match *c {
-                None => [v[0], v[1]],
+                None => std::array::from_fn(|a| v[a]),
                 Some((k, w)) => {
-                    let mut out = [0.0; 2];
-                    for (node, wn) in [k, k + 1, k + nx, k + nx + 1].into_iter().zip(w) {
+                    let mut out = [0.0; D];
+                    for (corner, &wn) in w.iter().enumerate().take(Self::CORNERS) {
                         // A node the element weighs (wn > 0) is one it added mass to; a node of
                         // weight 0 may hold nothing, and adds nothing.
-                        let s = self.sums[node];
-                        out[0] += wn * s[0];
-                        out[1] += wn * s[1];
+                        let s = &self.sums[self.corner(k, corner)];
+                        for a in 0..D {
+                            out[a] += wn * s.0[a];
+                        }
                     }
                     out
                 }
@@ -148,16 +191,16 @@ impl RateField {
         }
     }
 
-    /// The relative normal velocity of the pair (i, j) along the unit normal (nx, ny) as the
-    /// rate reads it, m/s: the smoothed field's where the model has one (`rate_vel` the field's
+    /// The relative normal velocity of the pair (i, j) along the unit normal `n` as the rate
+    /// reads it, m/s: the smoothed field's where the model has one (`rate_vel` the field's
     /// [`RateField::vel_mps`]), else the pair's own `vn_mps`.
     #[inline(always)]
-    pub fn normal_velocity_mps(rate_vel: &[[f64; 2]], i: u32, j: u32, nx: f64, ny: f64, vn_mps: f64) -> f64 {
+    pub fn normal_velocity_mps(rate_vel: &[[f64; D]], i: u32, j: u32, n: [f64; D], vn_mps: f64) -> f64 {
         if rate_vel.is_empty() {
             return vn_mps;
         }
         let (a, b) = (rate_vel[i as usize], rate_vel[j as usize]);
-        (b[0] - a[0]) * nx + (b[1] - a[1]) * ny
+        (1..D).fold((b[0] - a[0]) * n[0], |acc, k| acc + (b[k] - a[k]) * n[k])
     }
 
     /// True when no element is smoothed.
@@ -188,7 +231,7 @@ mod tests {
     #[test]
     fn a_uniform_velocity_passes_unchanged() {
         let (pos, initial, mass) = patch(40, 0.01);
-        let mut f = RateField::new((0..pos.len() as u32).collect(), &initial, pos.len(), 0.05);
+        let mut f = RateField::<2>::new((0..pos.len() as u32).collect(), &initial, pos.len(), 0.05);
         let vel = vec![[3.0, -2.0, 0.5]; pos.len()];
         f.update(&pos, &vel, &mass);
         for v in &f.vel_mps {
@@ -203,7 +246,7 @@ mod tests {
         let d = 0.005;
         let (pos, initial, mass) = patch(80, d);
         let ell = 0.04;
-        let mut f = RateField::new((0..pos.len() as u32).collect(), &initial, pos.len(), ell);
+        let mut f = RateField::<2>::new((0..pos.len() as u32).collect(), &initial, pos.len(), ell);
         let rate = 100.0;
         let vel: Vec<[f64; 3]> = pos.iter().map(|p| [rate * p[0], -0.5 * rate * p[1], 0.0]).collect();
         f.update(&pos, &vel, &mass);
@@ -230,7 +273,7 @@ mod tests {
         for d in [0.01, 0.005, 0.0025] {
             let n = (0.4 / d) as usize;
             let (pos, initial, mass) = patch(n, d);
-            let mut f = RateField::new((0..pos.len() as u32).collect(), &initial, pos.len(), ell);
+            let mut f = RateField::<2>::new((0..pos.len() as u32).collect(), &initial, pos.len(), ell);
             let vel: Vec<[f64; 3]> = pos.iter().map(|p| [0.0, if p[0] < 0.2 { 10.0 } else { 0.0 }, 0.0]).collect();
             f.update(&pos, &vel, &mass);
             // Rates between horizontal neighbours in the middle row band.
@@ -255,11 +298,61 @@ mod tests {
     #[test]
     fn elements_outside_the_grid_keep_their_own_velocity() {
         let (mut pos, initial, mass) = patch(10, 0.01);
-        let mut f = RateField::new((0..pos.len() as u32).collect(), &initial, pos.len(), 0.02);
+        let mut f = RateField::<2>::new((0..pos.len() as u32).collect(), &initial, pos.len(), 0.02);
         pos[5][0] = 50.0;
         let mut vel = vec![[0.0; 3]; pos.len()];
         vel[5] = [7.0, 8.0, 0.0];
         f.update(&pos, &vel, &mass);
         assert_eq!(f.vel_mps[5], [7.0, 8.0]);
+    }
+
+    /// The same transfer in 3D (trilinear): a linear field is kept inside, and a field uniform
+    /// along z is smoothed as the 2D transfer smooths it.
+    #[test]
+    fn in_three_dimensions_a_linear_field_is_kept_and_a_planar_one_smoothed_as_in_2d() {
+        let cube = |n: usize, d: f64| -> (Vec<[f64; 3]>, Vec<f64>) {
+            let mut pos = Vec::new();
+            for k in 0..n {
+                for j in 0..n {
+                    for i in 0..n {
+                        let jit = 0.1 * d * (((i * 7 + j * 13 + k * 5) % 11) as f64 / 11.0 - 0.5);
+                        pos.push([i as f64 * d + jit, j as f64 * d - jit, k as f64 * d + 0.5 * jit]);
+                    }
+                }
+            }
+            let mass = vec![1.0; pos.len()];
+            (pos, mass)
+        };
+        let (d, ell, rate) = (0.005, 0.04, 100.0);
+        let (pos, mass) = cube(40, d);
+        let mut f = RateField::<3>::new((0..pos.len() as u32).collect(), &pos, pos.len(), ell);
+        let vel: Vec<[f64; 3]> = pos.iter().map(|p| [rate * p[0], -0.5 * rate * p[1], 0.25 * rate * p[2]]).collect();
+        f.update(&pos, &vel, &mass);
+        let side = 39.0 * d;
+        let inside = |p: &[f64; 3]| p.iter().all(|&x| x > 1.5 * ell && x < side - 1.5 * ell);
+        let mut worst = 0.0f64;
+        for e in (0..pos.len()).filter(|&e| inside(&pos[e])) {
+            let v = f.vel_mps[e];
+            worst = worst.max((v[0] - vel[e][0]).abs()).max((v[1] - vel[e][1]).abs()).max((v[2] - vel[e][2]).abs());
+        }
+        assert!(worst < 0.02 * rate * d, "worst {worst} m/s");
+        // A field that does not vary along z is smoothed in 3D as in 2D: layers of the 2D
+        // patch stacked along z give the 2D field's velocities (so the 2D jump test, mesh
+        // objectivity included, holds in 3D).
+        let (p2, initial2, m2) = patch(60, 0.005);
+        let layers = 9;
+        let p3: Vec<[f64; 3]> = (0..layers).flat_map(|k| p2.iter().map(move |p| [p[0], p[1], k as f64 * 0.005])).collect();
+        let vel2: Vec<[f64; 3]> = p2.iter().map(|p| [0.0, if p[0] < 0.15 { 10.0 } else { 0.0 }, 0.0]).collect();
+        let vel3: Vec<[f64; 3]> = (0..layers).flat_map(|_| vel2.iter().copied()).collect();
+        let m3 = vec![1.0; p3.len()];
+        let mut f2 = RateField::<2>::new((0..p2.len() as u32).collect(), &initial2, p2.len(), ell);
+        let mut f3 = RateField::<3>::new((0..p3.len() as u32).collect(), &p3, p3.len(), ell);
+        f2.update(&p2, &vel2, &m2);
+        f3.update(&p3, &vel3, &m3);
+        let middle = (layers / 2) * p2.len();
+        for e in 0..p2.len() {
+            let (a, b) = (f2.vel_mps[e], f3.vel_mps[middle + e]);
+            assert!((a[0] - b[0]).abs() < 1e-12 && (a[1] - b[1]).abs() < 1e-12 && b[2].abs() < 1e-12, "element {e}: 2D {a:?}, 3D {b:?}");
+        }
     }
 }
