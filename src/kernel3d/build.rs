@@ -150,6 +150,7 @@ impl Builder {
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
             actions: Vec::new(),
             shares: (Vec::new(), Vec::new()),
+            locals: Vec::new(),
             state: State { pos_m: pos, vel_mps: vel, spin_rad_per_s: vec![[0.0; 3]; n], contacts, ..Default::default() },
         };
         model.search();

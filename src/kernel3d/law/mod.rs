@@ -86,6 +86,8 @@ pub struct Local {
     pub kr: f64,
     /// Twisting stiffness, N·m/rad (0: off).
     pub kt: f64,
+    /// 1/r̄, 1/m (the rolling angle's divisor).
+    pub per_r_mean: f64,
 }
 
 impl Class {
@@ -112,6 +114,7 @@ impl Class {
             ks: self.ks_pa * r_m,
             kr: self.rolling.map_or(0.0, |p| p.kr_pa * r3),
             kt: self.twisting.map_or(0.0, |p| p.kt_pa * r3),
+            per_r_mean: 1.0 / r_m,
         }
     }
 }
@@ -161,7 +164,19 @@ crate::kernel::ledger::mechanisms! {
 /// velocities (central differences, as in 2D); the history's frame turns from the stored normal
 /// to the present one.
 pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
-    let k = class.at(0.5 * (g.r[0] + g.r[1]));
+    act_at(c, class, &class.at(mean_radius_m(g.r)), g, dt_s, diss)
+}
+
+/// The mean radius r̄ a contact's springs are scaled by (`Class::at`), m, of radii `r` (m).
+#[inline(always)]
+pub fn mean_radius_m(r: [f64; 2]) -> f64 {
+    0.5 * (r[0] + r[1])
+}
+
+/// [`act`] with the class's springs at this contact, `k` = `class.at(mean_radius_m(g.r))`, given:
+/// the step takes them once per class when every sphere has the same radius (the same bits).
+#[inline(always)]
+pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
     let d = norm(g.dx_m);
     let n = scale(1.0 / d, g.dx_m);
     let n_old = c.normal;
@@ -184,7 +199,7 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
             let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks, k.shear_n);
             diss.slip_j += ws;
             if failure::breaks(c.plastic_opening_m, k.at_break_m) {
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, &k);
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, k);
                 diss.broken += 1;
                 c.bond = Bond::Frictional;
                 c.plastic_opening_m = 0.0;
@@ -199,7 +214,7 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
             if opening >= 0.0 {
                 // Apart: the history is forgotten, what the springs held booked where it went.
                 diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks;
-                let (rolling, twisting) = moments_split_j(c, &k);
+                let (rolling, twisting) = moments_split_j(c, k);
                 diss.rolling_j += rolling;
                 diss.twisting_j += twisting;
                 c.forget(ri + rj);
@@ -224,7 +239,7 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
     };
     let r_mean = 0.5 * (ri + rj);
     if let Some(p) = &class.rolling {
-        let d_theta = rolling::increment(ri, rj, n_old, n, g.w[0], g.w[1], dt_s);
+        let d_theta = rolling::increment_per(ri, rj, k.per_r_mean, n_old, n, g.w[0], g.w[1], dt_s);
         let (m, w) = rolling::moment(carried(c.rolling_nm, n), d_theta, k.kr, p.eta, r_mean, f_n);
         // The moments' work is twice M dθ (`moments_j`).
         diss.rolling_j += 2.0 * w;
