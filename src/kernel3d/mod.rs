@@ -11,6 +11,7 @@ pub mod build;
 pub mod contact;
 pub mod contract;
 pub mod detect;
+pub mod energy;
 pub mod integrate;
 pub mod law;
 pub mod stability;
@@ -23,7 +24,7 @@ pub use build::Builder;
 use contact::Contact;
 use law::{Class, Dissipation, Pair};
 use state::{Spheres, State};
-use vec3::{V3, add, dot, norm, sub};
+use vec3::{V3, add, dot, sub};
 
 use rayon::prelude::*;
 
@@ -283,15 +284,7 @@ impl Model {
 
     /// Elastic energy in the contacts, J.
     pub fn strain_energy_j(&self) -> f64 {
-        let st = &self.state;
-        st.contacts
-            .iter()
-            .map(|c| {
-                let (i, j) = (c.i as usize, c.j as usize);
-                let r_mean = 0.5 * (self.spheres.radius_m[i] + self.spheres.radius_m[j]);
-                law::stored_j(c, &self.classes[c.class as usize], norm(sub(st.pos_m[j], st.pos_m[i])), r_mean)
-            })
-            .sum()
+        self.strain_energy_at_j(&self.state.pos_m)
     }
 
     /// Intact bonds.

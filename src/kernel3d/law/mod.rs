@@ -199,7 +199,12 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, di
             let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks, k.shear_n);
             diss.slip_j += ws;
             if failure::breaks(c.plastic_opening_m, k.at_break_m) {
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, k);
+                // The bond acts no more from this step: of the springs' work over its increments
+                // central differences take the last forces' half (the trapezoid's) and not the
+                // new forces' half, which the lines above booked (an error of order Δt a break).
+                let unapplied = 0.5 * (f_n * step - dot(s, slip));
+                let (rolling, twisting) = last_moments_half_work_j(c, class, k, g, n_old, n, dt_s);
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, k) - unapplied + rolling + twisting;
                 diss.broken += 1;
                 c.bond = Bond::Frictional;
                 c.plastic_opening_m = 0.0;
@@ -212,11 +217,14 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, di
         }
         Bond::Frictional => {
             if opening >= 0.0 {
-                // Apart: the history is forgotten, what the springs held booked where it went.
-                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks;
+                // Apart: the history is forgotten, what the springs held booked where it went,
+                // with the last values' half of their work over this step's increments (what
+                // central differences took out of the kinetic energy).
+                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks - 0.5 * dot(shear_last, slip);
                 let (rolling, twisting) = moments_split_j(c, k);
-                diss.rolling_j += rolling;
-                diss.twisting_j += twisting;
+                let (rolling_w, twisting_w) = last_moments_half_work_j(c, class, k, g, n_old, n, dt_s);
+                diss.rolling_j += rolling + rolling_w;
+                diss.twisting_j += twisting + twisting_w;
                 c.forget(ri + rj);
                 c.normal = n;
                 return Action::default();
@@ -256,6 +264,19 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, di
     }
     c.normal = n;
     a
+}
+
+/// The work the contact's last rolling and twisting moments do over this step's turns when the
+/// contact lets go (their trapezoid's half, M dθ: the moments' work is 2 M dθ), J, apart.
+#[cold]
+fn last_moments_half_work_j(c: &Contact, class: &Class, k: &Local, g: &Pair, n_old: V3, n: V3, dt_s: f64) -> (f64, f64) {
+    let rolling = if class.rolling.is_some() {
+        dot(carried(c.rolling_nm, n), rolling::increment_per(g.r[0], g.r[1], k.per_r_mean, n_old, n, g.w[0], g.w[1], dt_s))
+    } else {
+        0.0
+    };
+    let twisting = if class.twisting.is_some() { c.twisting_nm * 0.5 * (dot(g.w[0], n) - dot(g.w[1], n)) * dt_s } else { 0.0 };
+    (rolling, twisting)
 }
 
 /// Elastic energy in the contact's rolling and twisting springs, J: |M|²/k, not ½|M|²/k, since
