@@ -161,7 +161,7 @@ impl Builder {
             .map(|c| {
                 let (i, j) = (c.i as usize, c.j as usize);
                 let (ri, rj) = (model.spheres.radius_m[i], model.spheres.radius_m[j]);
-                Link { ends: [i, j], lever_m: [ri, rj], class: &model.classes[c.class as usize] }
+                Link { ends: [i, j], lever_m: [ri, rj], normal: c.normal, class: &model.classes[c.class as usize] }
             })
             .collect();
         let sp = &model.spheres;

@@ -96,7 +96,7 @@ impl Simulation for Model {
             dt_s: self.motion.dt_s,
             dt_bound_s: self.dt_bound_s,
             omega_bound_rad_per_s: self.omega_bound_rad_per_s,
-            dt_limit: format!("{:.2} of the Gershgorin bound over the contacts", self.motion.dt_s / self.dt_bound_s),
+            dt_limit: format!("{:.2} of the contact-by-contact bound over the contacts and the candidates", self.motion.dt_s / self.dt_bound_s),
             kinetic_energy_j: ke,
             strain_energy_j: se,
             external_work_j: w.external_j,
