@@ -110,7 +110,7 @@ fn a_3d_run_resumed_from_a_checkpoint_ends_bit_for_bit_as_the_run_that_never_sto
         saved.push(c.to_bytes());
         Err(demsweep::Error::input("test", "killed"))
     };
-    let options = run::Options { checkpointing: Some(Checkpointing { every_steps: 200, save: &mut save }), ..Default::default() };
+    let options = run::Options { checkpointing: Some(Checkpointing { every_steps: 100, save: &mut save }), ..Default::default() };
     assert!(run::run_with(impact(), options).is_err());
     let checkpoint = RunCheckpoint::from_bytes(&saved[0]).unwrap();
     let resumed = run::run_with(impact(), run::Options { resume: Some(&checkpoint), ..Default::default() }).unwrap();

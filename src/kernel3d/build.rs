@@ -150,6 +150,7 @@ impl Builder {
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
             actions: Vec::new(),
             shares: (Vec::new(), Vec::new()),
+            locals: Vec::new(),
             state: State { pos_m: pos, vel_mps: vel, spin_rad_per_s: vec![[0.0; 3]; n], contacts, ..Default::default() },
         };
         model.search();
@@ -160,7 +161,7 @@ impl Builder {
             .map(|c| {
                 let (i, j) = (c.i as usize, c.j as usize);
                 let (ri, rj) = (model.spheres.radius_m[i], model.spheres.radius_m[j]);
-                Link { ends: [i, j], lever_m: [ri, rj], class: &model.classes[c.class as usize] }
+                Link { ends: [i, j], lever_m: [ri, rj], normal: c.normal, class: &model.classes[c.class as usize] }
             })
             .collect();
         let sp = &model.spheres;

@@ -11,6 +11,10 @@ use super::super::vec3::{V3, add, dot, norm, scale, sub};
 #[inline]
 pub fn capped(last: V3, increment: V3, k: f64, limit: f64) -> (V3, f64) {
     let trial = add(last, scale(k, increment));
+    // No cap: elastic whatever its length, which then needs no root (the same bits).
+    if limit == f64::INFINITY {
+        return (trial, 0.0);
+    }
     let size = norm(trial);
     if size <= limit {
         return (trial, 0.0);

@@ -86,6 +86,8 @@ pub struct Local {
     pub kr: f64,
     /// Twisting stiffness, N·m/rad (0: off).
     pub kt: f64,
+    /// 1/r̄, 1/m (the rolling angle's divisor).
+    pub per_r_mean: f64,
 }
 
 impl Class {
@@ -112,6 +114,7 @@ impl Class {
             ks: self.ks_pa * r_m,
             kr: self.rolling.map_or(0.0, |p| p.kr_pa * r3),
             kt: self.twisting.map_or(0.0, |p| p.kt_pa * r3),
+            per_r_mean: 1.0 / r_m,
         }
     }
 }
@@ -161,7 +164,19 @@ crate::kernel::ledger::mechanisms! {
 /// velocities (central differences, as in 2D); the history's frame turns from the stored normal
 /// to the present one.
 pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
-    let k = class.at(0.5 * (g.r[0] + g.r[1]));
+    act_at(c, class, &class.at(mean_radius_m(g.r)), g, dt_s, diss)
+}
+
+/// The mean radius r̄ a contact's springs are scaled by (`Class::at`), m, of radii `r` (m).
+#[inline(always)]
+pub fn mean_radius_m(r: [f64; 2]) -> f64 {
+    0.5 * (r[0] + r[1])
+}
+
+/// [`act`] with the class's springs at this contact, `k` = `class.at(mean_radius_m(g.r))`, given:
+/// the step takes them once per class when every sphere has the same radius (the same bits).
+#[inline(always)]
+pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
     let d = norm(g.dx_m);
     let n = scale(1.0 / d, g.dx_m);
     let n_old = c.normal;
@@ -184,7 +199,12 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
             let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks, k.shear_n);
             diss.slip_j += ws;
             if failure::breaks(c.plastic_opening_m, k.at_break_m) {
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, &k);
+                // The bond acts no more from this step: of the springs' work over its increments
+                // central differences take the last forces' half (the trapezoid's) and not the
+                // new forces' half, which the lines above booked (an error of order Δt a break).
+                let unapplied = 0.5 * (f_n * step - dot(s, slip));
+                let (rolling, twisting) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, k) - unapplied + rolling + twisting;
                 diss.broken += 1;
                 c.bond = Bond::Frictional;
                 c.plastic_opening_m = 0.0;
@@ -197,11 +217,14 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
         }
         Bond::Frictional => {
             if opening >= 0.0 {
-                // Apart: the history is forgotten, what the springs held booked where it went.
-                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks;
-                let (rolling, twisting) = moments_split_j(c, &k);
-                diss.rolling_j += rolling;
-                diss.twisting_j += twisting;
+                // Apart: the history is forgotten, what the springs held booked where it went,
+                // with the last values' half of their work over this step's increments (what
+                // central differences took out of the kinetic energy).
+                diss.slip_j += 0.5 * dot(c.shear_n, c.shear_n) / k.ks - 0.5 * dot(shear_last, slip);
+                let (rolling, twisting) = moments_split_j(c, k);
+                let (rolling_w, twisting_w) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
+                diss.rolling_j += rolling + rolling_w;
+                diss.twisting_j += twisting + twisting_w;
                 c.forget(ri + rj);
                 c.normal = n;
                 return Action::default();
@@ -224,7 +247,7 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
     };
     let r_mean = 0.5 * (ri + rj);
     if let Some(p) = &class.rolling {
-        let d_theta = rolling::increment(ri, rj, n_old, n, g.w[0], g.w[1], dt_s);
+        let d_theta = rolling::increment_per(ri, rj, k.per_r_mean, n_old, n, g.w[0], g.w[1], dt_s);
         let (m, w) = rolling::moment(carried(c.rolling_nm, n), d_theta, k.kr, p.eta, r_mean, f_n);
         // The moments' work is twice M dθ (`moments_j`).
         diss.rolling_j += 2.0 * w;
@@ -241,6 +264,22 @@ pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissi
     }
     c.normal = n;
     a
+}
+
+/// The work the contact's last rolling and twisting moments do over this step's turns when the
+/// contact lets go (their trapezoid's half, M dθ: the moments' work is 2 M dθ), J, apart.
+/// Given the radii (m) and spins (rad/s) of the pair, and the old and new normal. Out of line
+/// and by value: a reference to the pair kept it out of registers on the hot path (1.12× slower).
+#[cold]
+#[inline(never)]
+fn last_moments_half_work_j(c: &Contact, class: &Class, k: &Local, (r, w): ([f64; 2], [V3; 2]), (n_old, n): (V3, V3), dt_s: f64) -> (f64, f64) {
+    let rolling = if class.rolling.is_some() {
+        dot(carried(c.rolling_nm, n), rolling::increment_per(r[0], r[1], k.per_r_mean, n_old, n, w[0], w[1], dt_s))
+    } else {
+        0.0
+    };
+    let twisting = if class.twisting.is_some() { c.twisting_nm * 0.5 * (dot(w[0], n) - dot(w[1], n)) * dt_s } else { 0.0 };
+    (rolling, twisting)
 }
 
 /// Elastic energy in the contact's rolling and twisting springs, J: |M|²/k, not ½|M|²/k, since

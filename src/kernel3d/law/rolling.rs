@@ -31,6 +31,13 @@ pub struct Params {
 /// `wa_rad_per_s`) and B over a step `dt_s` in which the normal turned from `n_old` to `n`.
 #[inline]
 pub fn increment(ra_m: f64, rb_m: f64, n_old: V3, n: V3, wa_rad_per_s: V3, wb_rad_per_s: V3, dt_s: f64) -> V3 {
+    increment_per(ra_m, rb_m, 1.0 / (0.5 * (ra_m + rb_m)), n_old, n, wa_rad_per_s, wb_rad_per_s, dt_s)
+}
+
+/// [`increment`] given 1/r̄ (1/m, `Local::per_r_mean`): a division fewer per contact.
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+pub fn increment_per(ra_m: f64, rb_m: f64, per_r: f64, n_old: V3, n: V3, wa_rad_per_s: V3, wb_rad_per_s: V3, dt_s: f64) -> V3 {
     let dn = sub(n_old, n);
     let spin = cross(sub(scale(ra_m * dt_s, wa_rad_per_s), scale(rb_m * dt_s, wb_rad_per_s)), n_old);
     let du = scale(0.5, [
@@ -38,8 +45,7 @@ pub fn increment(ra_m: f64, rb_m: f64, n_old: V3, n: V3, wa_rad_per_s: V3, wb_ra
         (ra_m - rb_m) * dn[1] + spin[1],
         (ra_m - rb_m) * dn[2] + spin[2],
     ]);
-    let r = 0.5 * (ra_m + rb_m);
-    scale(1.0 / r, cross(n, du))
+    scale(per_r, cross(n, du))
 }
 
 /// The new rolling moment (N·m, in the plane normal to `n`) from the last one carried into that
