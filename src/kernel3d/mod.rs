@@ -5,7 +5,7 @@
 //! On the pool, contacts are evaluated in parallel by fixed chunks and their actions then added
 //! to the spheres in contact order, and the spheres move by fixed chunks whose ledger shares are
 //! summed in chunk order: a step's bits are the same on any thread count (and on one thread,
-//! which takes the same chunks in turn).
+//! which takes the same chunks in turn and adds each action as it is made, in the same order).
 
 pub mod build;
 pub mod contact;
