@@ -37,6 +37,8 @@ fn class(kt_pa: f64) -> Class {
         mu: 0.5,
         rolling: Some(rolling::Params { kr_pa: E * PI / 4.0, eta: f64::INFINITY }),
         twisting: Some(twisting::Params { kt_pa, cap: twisting::Cap::None }),
+        rate: Default::default(),
+        compaction: None,
     }
 }
 

@@ -26,6 +26,8 @@ fn concrete() -> Class {
         mu: 0.5,
         rolling: Some(rolling::Params { kr_pa: ks, eta: 0.2 }),
         twisting: Some(twisting::Params { kt_pa: 0.5 * ks, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
+        rate: Default::default(),
+        compaction: None,
     }
 }
 

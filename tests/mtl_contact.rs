@@ -26,6 +26,8 @@ fn class(rolling: Option<rolling::Params>, twisting: Option<twisting::Params>) -
         mu: 0.5,
         rolling,
         twisting,
+        rate: Default::default(),
+        compaction: None,
     }
 }
 

@@ -3,7 +3,7 @@
 
 use std::ops::Range;
 
-use super::contact::{Bond, Contact};
+use super::contact::{Bond, Contact, Extra};
 use super::law::Class;
 use super::stability::{Link, omega_max_sq};
 use super::state::{Spheres, State};
@@ -11,6 +11,7 @@ use super::vec3::{V3, norm, scale, sub};
 use super::{Model, integrate};
 use crate::error::{Error, Result};
 use crate::kernel::Body;
+use crate::kernel::law::rate_field::RateField;
 use crate::simulation::Threading;
 
 /// What a 3D model is built from.
@@ -30,12 +31,15 @@ pub struct Builder {
     /// A fixed step, s, taken whatever the bound says (to measure where the bound lies; the
     /// bound is still computed and reported).
     pub dt_s: Option<f64>,
+    /// The rate part's averaging length, m, and the sphere kinds whose velocities are smoothed
+    /// over it (`kernel::law::rate_field`; None: each bond reads its own pair).
+    pub rate_averaging: Option<(f64, Vec<u16>)>,
 }
 
 impl Builder {
     /// An empty model of `kinds` sphere kinds (materials).
     pub fn new(kinds: usize) -> Builder {
-        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3, dt_s: None }
+        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3, dt_s: None, rate_averaging: None }
     }
 
     /// The class of contacts between kinds a and b (both orders).
@@ -134,9 +138,22 @@ impl Builder {
             .map(|&(i, j)| {
                 let dx = sub(pos[j as usize], pos[i as usize]);
                 let d = norm(dx);
-                Contact::new(i, j, class_of(i, j), Bond::Intact, d, scale(1.0 / d, dx))
+                let mut c = Contact::new(i, j, class_of(i, j), Bond::Intact, d, scale(1.0 / d, dx));
+                // A bond whose class has a rate or compaction part carries its state.
+                let class = &classes[c.class as usize];
+                if class.rate.enabled || class.compaction.is_some() {
+                    c.extra = Some(Box::new(Extra::new(d)));
+                }
+                c
             })
             .collect();
+        let rate_field = match &self.rate_averaging {
+            Some((length_m, kinds)) => {
+                let members = (0..n).filter(|&e| kinds.contains(&s.kind[e])).map(|e| e as u32).collect();
+                RateField::new(members, &s.initial_m, n, *length_m)
+            }
+            None => RateField::default(),
+        };
         let mut model = Model {
             spheres: s,
             classes,
@@ -151,6 +168,7 @@ impl Builder {
             actions: Vec::new(),
             shares: (Vec::new(), Vec::new()),
             locals: Vec::new(),
+            rate_field,
             state: State { pos_m: pos, vel_mps: vel, spin_rad_per_s: vec![[0.0; 3]; n], contacts, ..Default::default() },
         };
         model.search();
@@ -166,12 +184,16 @@ impl Builder {
             .collect();
         let sp = &model.spheres;
         let omega = omega_max_sq(&sp.radius_m, &sp.mass_kg, &sp.inertia_kg_m2, &sp.held, &links).sqrt();
-        if !(omega > 0.0 && omega.is_finite()) {
+        // Nothing free (every sphere driven, a kinematic test of a law): the step must be given.
+        let driven_only = omega == 0.0 && self.dt_s.is_some();
+        if !(omega > 0.0 && omega.is_finite()) && !driven_only {
             return Err(Error::input("class", format!("the contacts give no finite frequency bound ({omega} rad/s): no free sphere in a contact?")));
         }
         model.omega_bound_rad_per_s = omega;
         model.dt_bound_s = 2.0 / omega;
         model.motion.dt_s = self.dt_s.unwrap_or(self.safety * model.dt_bound_s);
+        let dt = model.motion.dt_s;
+        model.classes.iter_mut().for_each(|c| c.rate.set_time_step(dt));
         model.state.ledger.initial_j = model.kinetic_energy_j() + model.strain_energy_j();
         Ok(model)
     }

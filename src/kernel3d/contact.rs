@@ -4,6 +4,7 @@ use serde::{Deserialize, Serialize};
 
 use super::vec3::V3;
 pub use crate::kernel::contact::Bond;
+pub use crate::kernel::law::Extra;
 
 /// A contact's record. Everything here evolves except `i`, `j` and `class`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -28,19 +29,25 @@ pub struct Contact {
     pub rolling_nm: V3,
     /// The twisting moment k_t ω_M about the normal, N·m (eq 24, capped by eq 25/42).
     pub twisting_nm: f64,
+    /// A bond's rate and compaction state (the 2D kernel's record), where its class has either
+    /// part; none for frictional contacts, which have neither.
+    pub extra: Option<Box<Extra>>,
 }
 
 impl Contact {
     /// A fresh contact of `class` between i < j at rest length `rest_m` along `normal`.
     pub fn new(i: u32, j: u32, class: u16, bond: Bond, rest_m: f64, normal: V3) -> Contact {
-        Contact { i, j, class, bond, rest_m, normal, shear_n: [0.0; 3], plastic_opening_m: 0.0, rolling_nm: [0.0; 3], twisting_nm: 0.0 }
+        Contact { i, j, class, bond, rest_m, normal, shear_n: [0.0; 3], plastic_opening_m: 0.0, rolling_nm: [0.0; 3], twisting_nm: 0.0, extra: None }
     }
 
-    /// Forget the history of a frictional contact that came apart.
-    pub fn forget(&mut self, radius_sum_m: f64) {
+    /// Forget the history of a contact that let go (a bond broke, or a frictional contact came
+    /// apart) at centre distance `d_m`: its rest length returns towards touching, r_i + r_j, but
+    /// never past the present distance, so a pair a compacted bond held closer than touching
+    /// (`kernel::law::compaction`) is left apart, not thrown out of an overlap it did not have.
+    pub fn forget(&mut self, radius_sum_m: f64, d_m: f64) {
         self.shear_n = [0.0; 3];
         self.rolling_nm = [0.0; 3];
         self.twisting_nm = 0.0;
-        self.rest_m = radius_sum_m;
+        self.rest_m = radius_sum_m.min(self.rest_m.max(d_m));
     }
 }

@@ -31,6 +31,7 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::kernel::Body;
+use crate::kernel::law::rate_field::RateField;
 use crate::simulation::Threading;
 
 /// A model of spheres ready to step.
@@ -67,6 +68,10 @@ pub struct Model {
     pub(crate) shares: (Vec<Dissipation>, Vec<integrate::Report>),
     /// Each class's springs at the one sphere radius of this step, when all share one (scratch).
     pub(crate) locals: Vec<law::Local>,
+    /// The rate part's smoothed velocity field (`kernel::law::rate_field`): its grid is
+    /// configuration, its values remade every step from the state (empty: each bond reads its
+    /// own pair).
+    pub rate_field: RateField<3>,
 }
 
 /// What a contact's law reads of the model in a step.
@@ -77,6 +82,7 @@ struct View<'a> {
     spin: &'a [V3],
     classes: &'a [Class],
     locals: &'a [law::Local],
+    rate_vel: &'a [V3],
     dt: f64,
 }
 
@@ -97,7 +103,7 @@ impl View<'_> {
                 &here
             }
         };
-        law::act_at(c, class, k, &pair, self.dt, diss)
+        law::act_at(c, class, k, &pair, self.rate_vel, self.dt, diss)
     }
 }
 
@@ -161,7 +167,8 @@ impl Model {
             locals.extend(classes.iter().map(|c| c.at(law::mean_radius_m([r, r]))));
         }
         let locals = &*locals;
-        let view = View { sp, pos: &st.pos_m, vel: &st.vel_mps, spin: &st.spin_rad_per_s, classes, locals, dt };
+        self.rate_field.update(&st.pos_m, &st.vel_mps, &sp.mass_kg);
+        let view = View { sp, pos: &st.pos_m, vel: &st.vel_mps, spin: &st.spin_rad_per_s, classes, locals, rate_vel: &self.rate_field.vel_mps, dt };
         let one = |c: &mut Contact, diss: &mut Dissipation| view.act(c, diss);
         let parts = &mut self.shares.0;
         parts.resize(st.contacts.len().div_ceil(CHUNK), Dissipation::default());

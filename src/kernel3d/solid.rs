@@ -19,11 +19,12 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::law::{Class, rolling, twisting};
+use super::law::{Class, Compaction, rolling, twisting};
 use super::stiffness;
 use crate::error::{Error, Result};
 use crate::kernel::law::friction::series;
-use crate::material::FailureCriterion;
+use crate::kernel::law::rate;
+use crate::material::{CompactionSpec, FailureCriterion, RateSpec};
 
 /// `[[material]]` of a 3D scene, SI units.
 #[derive(Debug, Clone, PartialEq, Deserialize, Serialize)]
@@ -58,6 +59,26 @@ pub struct Solid {
     /// Twisting resistance of the moment transfer law (off when absent).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub twisting: Option<TwistingSpec>,
+    /// Quasi-static compressive strength f'c, Pa: the rate law's compressive ratio and
+    /// compaction's critical stress on the bond's area.
+    #[serde(default)]
+    pub compressive_strength_pa: f64,
+    /// Strain-rate effects on the bonds (seed 000 §6, the 2D kernel's laws; off when absent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub rate: Option<RateSpec>,
+    /// Compaction of the bonds in compression (seed 000 eq 6.11; off when absent).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub compaction: Option<CompactionSpec>,
+}
+
+/// What a class's rate part needs of the scene: the fastest speed in it and the mean radius of
+/// the body's spheres (the default rate cap: the speed over one bond).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RateContext {
+    /// Fastest initial or prescribed speed, m/s.
+    pub max_speed_mps: f64,
+    /// Mean sphere radius R, m.
+    pub radius_m: f64,
 }
 
 /// `[material.rolling]`.
@@ -119,7 +140,28 @@ impl Solid {
         if let Some(t) = self.twisting {
             check("twisting.cohesion_pa", t.cohesion_pa, true)?;
         }
+        check("compressive_strength_pa", self.compressive_strength_pa, true)?;
+        if let Some(r) = &self.rate {
+            r.validate(&format!("{prefix}.rate"))?;
+            if self.failure != FailureCriterion::None {
+                check("tensile_strength_pa", self.tensile_strength_pa, false)?;
+            }
+        }
+        if let Some(c) = &self.compaction {
+            c.validate(&format!("{prefix}.compaction"))?;
+            check("compressive_strength_pa", self.compressive_strength_pa, false)?;
+        }
         Ok(())
+    }
+
+    /// What the rate laws read of this material (None: no rate law).
+    pub fn rate_source(&self) -> Option<rate::Source<'_>> {
+        self.rate.as_ref().map(|spec| rate::Source {
+            youngs_modulus_pa: self.youngs_modulus_pa,
+            tensile_strength_pa: self.tensile_strength_pa,
+            compressive_strength_pa: self.compressive_strength_pa,
+            spec,
+        })
     }
 
     /// Fracture energy G_f = K_Ic² (1 − ν²) / E, J/m².
@@ -130,7 +172,7 @@ impl Solid {
     /// The contact class of this material on a packing of bond density `bond_density`
     /// (`stiffness::bond_density`), checked for bonds of mean radius up to `r_max_m` (m): the
     /// energy law needs G_f π r̄² above the elastic energy stored at the plateau.
-    pub fn class(&self, bond_density: f64, r_max_m: f64) -> Result<Class> {
+    pub fn class(&self, bond_density: f64, r_max_m: f64, ctx: RateContext) -> Result<Class> {
         let (kappa, alpha) = stiffness::springs(self.youngs_modulus_pa, self.poisson_ratio, bond_density)?;
         let ks = alpha * kappa;
         let breaks = self.failure == FailureCriterion::StrengthEnergy;
@@ -148,6 +190,9 @@ impl Solid {
                 kt_pa: 0.5 * ks,
                 cap: twisting::Cap::MohrCoulomb { tan_phi: self.friction_coefficient, cohesion_pa: t.cohesion_pa },
             }),
+            // The dynamic opening at break is taken at each contact (G_f π r̄²): no class area.
+            rate: rate::Params::between(self.rate_source(), self.rate_source(), 2.0 * ctx.radius_m, ctx.max_speed_mps, 0.0),
+            compaction: self.compaction.map(|law| Compaction { critical_pa: self.compressive_strength_pa, law }),
         };
         if breaks {
             // G_f A ≥ F_t² / (2 k_n) with A = π r̄², F_t = σ_t A, k_n = κ r̄: r̄ ≤ 2 κ G_f / (π σ_t²).
@@ -168,10 +213,19 @@ impl Solid {
     }
 }
 
-/// The class between spheres of two classes: springs as half-springs in series, the mean μ,
-/// the smaller strengths and η; rolling and twisting only where both have them.
-pub fn between(a: &Class, b: &Class) -> Class {
+/// The class between spheres of two materials and their classes: springs as half-springs in
+/// series, the mean μ, the smaller strengths and η; rolling, twisting, rate and compaction only
+/// where both have them (the rate ratios the smaller of the two, as in 2D).
+pub fn between((sa, a): (&Solid, &Class), (sb, b): (&Solid, &Class), ctx: RateContext) -> Class {
     Class {
+        rate: rate::Params::between(sa.rate_source(), sb.rate_source(), 2.0 * ctx.radius_m, ctx.max_speed_mps, 0.0),
+        compaction: match (a.compaction, b.compaction) {
+            (Some(x), Some(y)) => Some(Compaction {
+                critical_pa: x.critical_pa.min(y.critical_pa),
+                law: CompactionSpec { stiffness_ratio: x.law.stiffness_ratio.min(y.law.stiffness_ratio), full_strain: x.law.full_strain.min(y.law.full_strain) },
+            }),
+            _ => None,
+        },
         bond_kn_pa: series(a.bond_kn_pa, b.bond_kn_pa),
         bond_ks_pa: series(a.bond_ks_pa, b.bond_ks_pa),
         bond_tension_pa: a.bond_tension_pa.min(b.bond_tension_pa),
@@ -203,6 +257,8 @@ pub fn between(a: &Class, b: &Class) -> Class {
 mod tests {
     use super::*;
 
+    const CTX: RateContext = RateContext { max_speed_mps: 100.0, radius_m: 0.005 };
+
     fn concrete() -> Solid {
         toml::from_str(
             "name = \"concrete\"\ndensity_kg_per_m3 = 2400.0\nyoungs_modulus_pa = 30e9\npoisson_ratio = 0.2\n\
@@ -217,7 +273,7 @@ mod tests {
         let s = concrete();
         s.validate("material[0]").unwrap();
         let b = 4.0;
-        let c = s.class(b, 0.005).unwrap();
+        let c = s.class(b, 0.005, CTX).unwrap();
         let (kappa, alpha) = stiffness::springs(30e9, 0.2, b).unwrap();
         assert_eq!((c.bond_kn_pa, c.bond_ks_pa, c.kn_pa), (kappa, alpha * kappa, kappa));
         assert_eq!((c.bond_tension_pa, c.bond_shear_pa), (3e6, 3e6));
@@ -228,7 +284,7 @@ mod tests {
         // bond's plastic opening at break is zero.
         let r_limit = 2.0 * kappa * c.bond_fracture_j_per_m2 / (std::f64::consts::PI * 9e12);
         assert!(c.at(r_limit).at_break_m.abs() < 1e-9 * r_limit);
-        let e = s.class(b, 1.01 * r_limit).unwrap_err().to_string();
+        let e = s.class(b, 1.01 * r_limit, CTX).unwrap_err().to_string();
         assert!(e.contains("concrete") && e.contains("K_Ic"), "{e}");
     }
 
@@ -243,11 +299,12 @@ mod tests {
 
     #[test]
     fn two_materials_meet_through_springs_in_series() {
-        let c = concrete().class(4.0, 0.005).unwrap();
-        let same = between(&c, &c);
+        let s = concrete();
+        let c = s.class(4.0, 0.005, CTX).unwrap();
+        let same = between((&s, &c), (&s, &c), CTX);
         assert!((same.kn_pa / c.kn_pa - 1.0).abs() < 1e-15 && same.mu == c.mu && same.rolling == c.rolling);
         let stiff = Class { kn_pa: 3.0 * c.kn_pa, rolling: None, ..c.clone() };
-        let m = between(&c, &stiff);
+        let m = between((&s, &c), (&s, &stiff), CTX);
         assert!((m.kn_pa / (1.5 * c.kn_pa) - 1.0).abs() < 1e-15 && m.rolling.is_none());
     }
 }

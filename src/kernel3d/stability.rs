@@ -39,7 +39,10 @@ pub fn omega_max_sq(radius_m: &[f64], mass_kg: &[f64], inertia_kg_m2: &[f64], he
 fn contact_bound(l: &Link<'_>, radius_m: &[f64], mass_kg: &[f64], inertia_kg_m2: &[f64], held: &[bool], z: &[u32]) -> f64 {
     let [i, j] = l.ends;
     let k = l.class.at(0.5 * (radius_m[i] + radius_m[j]));
-    let (kn, ks, kr, kt) = (k.bond_kn.max(k.kn), k.bond_ks.max(k.ks), k.kr, k.kt);
+    // A bond stiffens with the rate part up to its largest modulus ratio (at the rate cap);
+    // compaction's yield line is softer and full compaction returns to k_n.
+    let r = l.class.rate.max_modulus_ratio();
+    let (kn, ks, kr, kt) = ((r * k.bond_kn).max(k.kn), (r * k.bond_ks).max(k.ks), k.kr, k.kt);
     let n = l.normal;
     let nn = |a: usize, b: usize| n[a] * n[b];
     let eye = |a: usize, b: usize| if a == b { 1.0 } else { 0.0 };

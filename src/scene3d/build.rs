@@ -12,6 +12,7 @@ use std::sync::Arc;
 use super::{Packing3, Scene3};
 use crate::error::{Error, Result};
 use crate::kernel3d::law::Class;
+use crate::kernel3d::solid::{RateContext, Solid};
 use crate::kernel3d::{Builder, Model, solid, stiffness};
 use crate::packing3d::{self, Box3, Packing};
 use crate::simulation::{Built, Measure};
@@ -31,9 +32,17 @@ pub fn recipe_bond_density(radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Res
 }
 
 impl Scene3 {
+    /// The material of body `k`.
+    fn solid(&self, k: usize) -> &Solid {
+        self.material.iter().find(|m| m.name == self.body[k].material).expect("validated: the material exists")
+    }
+
     /// Build the model and its probes.
     pub fn build(&self) -> Result<Built<Model>> {
         let kinds = self.body.len();
+        // The fastest speed in the scene sets the rate part's default cap.
+        let speed = |v: &[f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        let max_speed_mps = self.body.iter().map(|b| speed(&b.velocity_mps)).chain(self.fix.iter().map(|f| speed(&f.velocity_mps))).fold(0.0, f64::max);
         let mut packings: Vec<Packing> = Vec::with_capacity(kinds);
         let mut classes: Vec<Class> = Vec::with_capacity(kinds);
         for (k, b) in self.body.iter().enumerate() {
@@ -51,13 +60,19 @@ impl Scene3 {
             let material = self.material.iter().find(|m| m.name == b.material).expect("validated: the material exists");
             let bd = recipe_bond_density(b.element_radius_m, b.seed, b.bond_gap_ratio).map_err(at)?;
             let r_max = p.radii_m.iter().copied().fold(0.0, f64::max);
-            classes.push(material.class(bd, r_max)?);
+            classes.push(material.class(bd, r_max, RateContext { max_speed_mps, radius_m: b.element_radius_m })?);
             packings.push(p);
         }
         let mut bld = Builder::new(kinds);
         for a in 0..kinds {
             for b in a..kinds {
-                bld.class(a, b, if a == b { classes[a].clone() } else { solid::between(&classes[a], &classes[b]) });
+                let class = if a == b {
+                    classes[a].clone()
+                } else {
+                    let ctx = RateContext { max_speed_mps, radius_m: 0.5 * (self.body[a].element_radius_m + self.body[b].element_radius_m) };
+                    solid::between((self.solid(a), &classes[a]), (self.solid(b), &classes[b]), ctx)
+                };
+                bld.class(a, b, class);
             }
         }
         let mut velocities = Vec::with_capacity(kinds);
@@ -103,6 +118,13 @@ impl Scene3 {
                 }
             }
             probes.push(Arc::new(p));
+        }
+        // When a material reads its rate over a length, every body with a rate law is smoothed
+        // over the shortest such length (as in 2D, `kernel::build`).
+        let length = self.material.iter().filter_map(|m| m.rate.and_then(|r| r.averaging_length())).fold(f64::INFINITY, f64::min);
+        if length.is_finite() {
+            let smoothed = (0..kinds).filter(|&k| self.solid(k).rate.is_some()).map(|k| k as u16).collect();
+            bld.rate_averaging = Some((length, smoothed));
         }
         let t = &self.time_step;
         bld.alpha_per_s = self.damping.alpha_per_s;

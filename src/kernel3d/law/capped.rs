@@ -10,7 +10,15 @@ use super::super::vec3::{V3, add, dot, norm, scale, sub};
 /// the kinetic energy.
 #[inline]
 pub fn capped(last: V3, increment: V3, k: f64, limit: f64) -> (V3, f64) {
-    let trial = add(last, scale(k, increment));
+    capped_from(last, last, increment, k, limit)
+}
+
+/// [`capped`] for a spring whose stiffness changed since the last step (the rate part's secant
+/// modulus): `base` is the spring's value at the new stiffness before the increment (it keeps its
+/// zero), `last` the value it had, whose mean with the new one books the slip.
+#[inline(always)]
+pub fn capped_from(last: V3, base: V3, increment: V3, k: f64, limit: f64) -> (V3, f64) {
+    let trial = add(base, scale(k, increment));
     // No cap: elastic whatever its length, which then needs no root (the same bits).
     if limit == f64::INFINITY {
         return (trial, 0.0);

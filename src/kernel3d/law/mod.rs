@@ -14,7 +14,8 @@ use serde::{Deserialize, Serialize};
 
 use super::contact::{Bond, Contact};
 use super::vec3::{V3, add, carried, cross, dot, in_plane, norm, scale, sub};
-use crate::kernel::law::{failure, friction, normal};
+use crate::kernel::law::rate_field::RateField;
+use crate::kernel::law::{compaction, failure, friction, normal, rate};
 
 /// Parameters of one kind of contact: configuration, fixed when the model is built. Every
 /// stiffness and strength is a modulus, scaled at each contact by its mean radius r̄ (k_n and
@@ -43,6 +44,24 @@ pub struct Class {
     pub rolling: Option<rolling::Params>,
     /// Twisting resistance (None: off).
     pub twisting: Option<twisting::Params>,
+    /// Strain-rate effects on the bonds (seed 000 §6: the 2D kernel's rate part; off unless
+    /// `enabled`).
+    #[serde(default)]
+    pub rate: rate::Params,
+    /// Compaction of the bonds in compression (seed 000 eq 6.11, the 2D kernel's return map) at
+    /// a critical stress f'c on the bond's area π r̄² (None: off).
+    #[serde(default)]
+    pub compaction: Option<Compaction>,
+}
+
+/// A class's compaction: the critical compressive force is `critical_pa` × π r̄², the yield
+/// line's slope `law.stiffness_ratio` × the bond's k_n, full at `law.full_strain`.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct Compaction {
+    /// f'c, Pa.
+    pub critical_pa: f64,
+    /// The law.
+    pub law: crate::material::CompactionSpec,
 }
 
 impl Class {
@@ -61,6 +80,8 @@ impl Class {
             mu,
             rolling: None,
             twisting: None,
+            rate: rate::Params::default(),
+            compaction: None,
         }
     }
 }
@@ -88,6 +109,10 @@ pub struct Local {
     pub kt: f64,
     /// 1/r̄, 1/m (the rolling angle's divisor).
     pub per_r_mean: f64,
+    /// G_f π r̄², J (the rate part's dynamic opening at break).
+    pub fracture_area_j: f64,
+    /// The bond's compaction at this contact (off: `enabled` false).
+    pub compaction: compaction::Params,
 }
 
 impl Class {
@@ -115,6 +140,13 @@ impl Class {
             kr: self.rolling.map_or(0.0, |p| p.kr_pa * r3),
             kt: self.twisting.map_or(0.0, |p| p.kt_pa * r3),
             per_r_mean: 1.0 / r_m,
+            fracture_area_j: self.bond_fracture_j_per_m2 * area,
+            compaction: self.compaction.map_or(compaction::Params::default(), |c| compaction::Params {
+                enabled: true,
+                critical_force_n: c.critical_pa * area,
+                stiffness_n_per_m: c.law.stiffness_ratio * bond_kn,
+                full_strain: c.law.full_strain,
+            }),
         }
     }
 }
@@ -157,6 +189,10 @@ crate::kernel::ledger::mechanisms! {
         twisting_j,
         /// Elastic energy of bonds when they broke, J.
         fracture_j,
+        /// Work along the bonds' compaction yield line, J.
+        compaction_j,
+        /// Energy the rate-dependent moduli took out of (> 0) or put into the bonds, J.
+        rate_j,
     }
 }
 
@@ -164,7 +200,7 @@ crate::kernel::ledger::mechanisms! {
 /// velocities (central differences, as in 2D); the history's frame turns from the stored normal
 /// to the present one.
 pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
-    act_at(c, class, &class.at(mean_radius_m(g.r)), g, dt_s, diss)
+    act_at(c, class, &class.at(mean_radius_m(g.r)), g, &[], dt_s, diss)
 }
 
 /// The mean radius r̄ a contact's springs are scaled by (`Class::at`), m, of radii `r` (m).
@@ -175,8 +211,10 @@ pub fn mean_radius_m(r: [f64; 2]) -> f64 {
 
 /// [`act`] with the class's springs at this contact, `k` = `class.at(mean_radius_m(g.r))`, given:
 /// the step takes them once per class when every sphere has the same radius (the same bits).
+/// `rate_vel` is the rate part's smoothed velocity field per sphere, m/s (empty: each bond
+/// reads its own pair's velocities; `kernel::law::rate_field`).
 #[inline(always)]
-pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
+pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V3], dt_s: f64, diss: &mut Dissipation) -> Action {
     let d = norm(g.dx_m);
     let n = scale(1.0 / d, g.dx_m);
     let n_old = c.normal;
@@ -193,22 +231,56 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, di
     let shear_last = carried(c.shear_n, n);
     let (f_n, shear) = match c.bond {
         Bond::Intact => {
-            let (f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, k.bond_kn, k.bond_kn, k.tension_n);
+            // The rate part's ratios (moduli, tensile and compressive strength), the 2D
+            // kernel's, from the relative normal velocity of the pair or of the smoothed field.
+            let (mut kn, mut ks, mut kn_last, mut ks_last, mut ratios) = (k.bond_kn, k.bond_ks, k.bond_kn, k.bond_ks, rate::STATIC);
+            if class.rate.enabled
+                && let Some(x) = c.extra.as_deref_mut()
+            {
+                let vn = if rate_vel.is_empty() { dot(sub(g.v[1], g.v[0]), n) } else { RateField::<3>::normal_velocity_mps(rate_vel, c.i, c.j, n, 0.0) };
+                ratios = class.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(vn, &mut x.vn_last_mps), 1.0 / x.length0_m);
+                // Secant moduli: the springs keep their zero (`kernel::law::rate`).
+                let ratio = if opening - c.plastic_opening_m < 0.0 { ratios[0] } else { ratios[1] };
+                (kn_last, ks_last) = (kn * x.modulus_ratio, ks * x.modulus_ratio);
+                x.modulus_ratio = ratio;
+                (kn, ks) = (kn * ratio, ks * ratio);
+            }
+            let xi = ratios[2];
+            let stretch_last = opening - step - c.plastic_opening_m;
+            let (mut f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, kn, kn_last, k.tension_n * xi);
             diss.plastic_j += w;
+            if k.compaction.enabled
+                && f_n < 0.0
+                && let Some(x) = c.extra.as_deref()
+            {
+                let (f, work) = k.compaction.compress(f_n, step, (kn, kn_last), &mut c.rest_m, x.length0_m, ratios[3]);
+                f_n = f;
+                diss.compaction_j += work;
+            }
             // The shear spring resists j's slip: its force on j is −k_s × slip.
-            let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.bond_ks, k.shear_n);
+            let base = if ks == ks_last { shear_last } else { scale(ks / ks_last, shear_last) };
+            let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, k.shear_n * xi);
             diss.slip_j += ws;
-            if failure::breaks(c.plastic_opening_m, k.at_break_m) {
+            if kn != kn_last {
+                // What the change of modulus took out of the springs: ½ (K_last − K) × last
+                // stretch × new stretch (`kernel::law::rate`, "Stiffness").
+                diss.rate_j += 0.5 * ((kn_last - kn) * stretch_last * (f_n / kn) + (ks_last - ks) * dot(shear_last, s) / (ks_last * ks));
+            }
+            // With the rate part, the energy criterion's opening at break is (G_f)_d = ξ G_f on
+            // the plateau ξ F_t (eq 6.10); a bond that cannot break keeps its ∞.
+            let at_break = if class.rate.enabled && k.at_break_m.is_finite() { rate::dynamic_opening_m(k.fracture_area_j, k.tension_n, xi, kn) } else { k.at_break_m };
+            if failure::breaks(c.plastic_opening_m, at_break) {
                 // The bond acts no more from this step: of the springs' work over its increments
                 // central differences take the last forces' half (the trapezoid's) and not the
                 // new forces' half, which the lines above booked (an error of order Δt a break).
                 let unapplied = 0.5 * (f_n * step - dot(s, slip));
                 let (rolling, twisting) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), k.bond_kn, k.bond_ks) + moments_j(c, k) - unapplied + rolling + twisting;
+                diss.fracture_j += failure::released_energy_j(f_n, norm(s), kn, ks) + moments_j(c, k) - unapplied + rolling + twisting;
                 diss.broken += 1;
                 c.bond = Bond::Frictional;
                 c.plastic_opening_m = 0.0;
-                c.forget(ri + rj);
+                c.extra = None;
+                c.forget(ri + rj, d);
                 c.normal = n;
                 // Broken in tension past the plateau: apart, carrying nothing.
                 return Action::default();
@@ -225,7 +297,7 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, dt_s: f64, di
                 let (rolling_w, twisting_w) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
                 diss.rolling_j += rolling + rolling_w;
                 diss.twisting_j += twisting + twisting_w;
-                c.forget(ri + rj);
+                c.forget(ri + rj, d);
                 c.normal = n;
                 return Action::default();
             }
@@ -300,8 +372,10 @@ fn moments_split_j(c: &Contact, k: &Local) -> (f64, f64) {
 /// mean radius `r_mean_m` (m).
 pub fn stored_j(c: &Contact, class: &Class, d_m: f64, r_mean_m: f64) -> f64 {
     let k = class.at(r_mean_m);
+    // A bond's springs at the rate part's modulus of its last step.
+    let ratio = c.extra.as_deref().map_or(1.0, |x| x.modulus_ratio);
     let (kn, ks) = match c.bond {
-        Bond::Intact => (k.bond_kn, k.bond_ks),
+        Bond::Intact => (k.bond_kn * ratio, k.bond_ks * ratio),
         Bond::Frictional => (k.kn, k.ks),
     };
     let stretch = match c.bond {
