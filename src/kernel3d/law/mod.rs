@@ -231,61 +231,15 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V
     let shear_last = carried(c.shear_n, n);
     let (f_n, shear) = match c.bond {
         Bond::Intact => {
-            // The rate part's ratios (moduli, tensile and compressive strength), the 2D
-            // kernel's, from the relative normal velocity of the pair or of the smoothed field.
-            let (mut kn, mut ks, mut kn_last, mut ks_last, mut ratios) = (k.bond_kn, k.bond_ks, k.bond_kn, k.bond_ks, rate::STATIC);
-            if class.rate.enabled
-                && let Some(x) = c.extra.as_deref_mut()
-            {
-                let vn = if rate_vel.is_empty() { dot(sub(g.v[1], g.v[0]), n) } else { RateField::<3>::normal_velocity_mps(rate_vel, c.i, c.j, n, 0.0) };
-                ratios = class.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(vn, &mut x.vn_last_mps), 1.0 / x.length0_m);
-                // Secant moduli: the springs keep their zero (`kernel::law::rate`).
-                let ratio = if opening - c.plastic_opening_m < 0.0 { ratios[0] } else { ratios[1] };
-                (kn_last, ks_last) = (kn * x.modulus_ratio, ks * x.modulus_ratio);
-                x.modulus_ratio = ratio;
-                (kn, ks) = (kn * ratio, ks * ratio);
-            }
-            let xi = ratios[2];
-            let stretch_last = opening - step - c.plastic_opening_m;
-            let (mut f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, kn, kn_last, k.tension_n * xi);
-            diss.plastic_j += w;
-            if k.compaction.enabled
-                && f_n < 0.0
-                && let Some(x) = c.extra.as_deref()
-            {
-                let (f, work) = k.compaction.compress(f_n, step, (kn, kn_last), &mut c.rest_m, x.length0_m, ratios[3]);
-                f_n = f;
-                diss.compaction_j += work;
-            }
-            // The shear spring resists j's slip: its force on j is −k_s × slip.
-            let base = if ks == ks_last { shear_last } else { scale(ks / ks_last, shear_last) };
-            let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, k.shear_n * xi);
-            diss.slip_j += ws;
-            if kn != kn_last {
-                // What the change of modulus took out of the springs: ½ (K_last − K) × last
-                // stretch × new stretch (`kernel::law::rate`, "Stiffness").
-                diss.rate_j += 0.5 * ((kn_last - kn) * stretch_last * (f_n / kn) + (ks_last - ks) * dot(shear_last, s) / (ks_last * ks));
-            }
-            // With the rate part, the energy criterion's opening at break is (G_f)_d = ξ G_f on
-            // the plateau ξ F_t (eq 6.10); a bond that cannot break keeps its ∞.
-            let at_break = if class.rate.enabled && k.at_break_m.is_finite() { rate::dynamic_opening_m(k.fracture_area_j, k.tension_n, xi, kn) } else { k.at_break_m };
-            if failure::breaks(c.plastic_opening_m, at_break) {
-                // The bond acts no more from this step: of the springs' work over its increments
-                // central differences take the last forces' half (the trapezoid's) and not the
-                // new forces' half, which the lines above booked (an error of order Δt a break).
-                let unapplied = 0.5 * (f_n * step - dot(s, slip));
-                let (rolling, twisting) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
-                diss.fracture_j += failure::released_energy_j(f_n, norm(s), kn, ks) + moments_j(c, k) - unapplied + rolling + twisting;
-                diss.broken += 1;
-                c.bond = Bond::Frictional;
-                c.plastic_opening_m = 0.0;
-                c.extra = None;
-                c.forget(ri + rj, d);
-                c.normal = n;
+            // One source for a bond with its rate or compaction state (`extra`) and without
+            // (compiled twice: the static bond pays nothing for the parts it does not have).
+            let at = Geometry { d, n, n_old, opening, step, slip, shear_last };
+            let kept = if c.extra.is_some() { bonded::<true>(c, class, k, g, &at, rate_vel, dt_s, diss) } else { bonded::<false>(c, class, k, g, &at, rate_vel, dt_s, diss) };
+            match kept {
+                Some(fs) => fs,
                 // Broken in tension past the plateau: apart, carrying nothing.
-                return Action::default();
+                None => return Action::default(),
             }
-            (f_n, s)
         }
         Bond::Frictional => {
             if opening >= 0.0 {
@@ -336,6 +290,87 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V
     }
     c.normal = n;
     a
+}
+
+/// Where a contact is at this step: centre distance d (m), the unit normal n and the last one,
+/// the opening d − d0 (m), this step's normal and tangential increments (m) and the shear spring
+/// carried into the new contact plane (N).
+struct Geometry {
+    d: f64,
+    n: V3,
+    n_old: V3,
+    opening: f64,
+    step: f64,
+    slip: V3,
+    shear_last: V3,
+}
+
+/// A bond at this step: the normal spring with its tensile plateau (and compaction), the shear
+/// spring with its plateau, the failure rule, springs and strengths scaled by the rate part;
+/// with `PARTS` the rate and compaction parts act where the class has them (the bond carries
+/// their state), without, the static bond. Returns the normal force (tension positive, N) and
+/// the shear force on j (N), or None when the bond broke (its energy booked).
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair, at: &Geometry, rate_vel: &[V3], dt_s: f64, diss: &mut Dissipation) -> Option<(f64, V3)> {
+    let Geometry { d, n, n_old, opening, step, slip, shear_last } = *at;
+    let [ri, rj] = g.r;
+    // The rate part's ratios (moduli, tensile and compressive strength), the 2D
+    // kernel's, from the relative normal velocity of the pair or of the smoothed field.
+    let (mut kn, mut ks, mut kn_last, mut ks_last, mut ratios) = (k.bond_kn, k.bond_ks, k.bond_kn, k.bond_ks, rate::STATIC);
+    if PARTS
+        && class.rate.enabled
+        && let Some(x) = c.extra.as_deref_mut()
+    {
+        let vn = if rate_vel.is_empty() { dot(sub(g.v[1], g.v[0]), n) } else { RateField::<3>::normal_velocity_mps(rate_vel, c.i, c.j, n, 0.0) };
+        ratios = class.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(vn, &mut x.vn_last_mps), 1.0 / x.length0_m);
+        // Secant moduli: the springs keep their zero (`kernel::law::rate`).
+        let ratio = if opening - c.plastic_opening_m < 0.0 { ratios[0] } else { ratios[1] };
+        (kn_last, ks_last) = (kn * x.modulus_ratio, ks * x.modulus_ratio);
+        x.modulus_ratio = ratio;
+        (kn, ks) = (kn * ratio, ks * ratio);
+    }
+    let xi = ratios[2];
+    let stretch_last = opening - step - c.plastic_opening_m;
+    let (mut f_n, w) = normal::bonded(opening, step, &mut c.plastic_opening_m, kn, kn_last, k.tension_n * xi);
+    diss.plastic_j += w;
+    if PARTS
+        && k.compaction.enabled
+        && f_n < 0.0
+        && let Some(x) = c.extra.as_deref()
+    {
+        let (f, work) = k.compaction.compress(f_n, step, (kn, kn_last), &mut c.rest_m, x.length0_m, ratios[3]);
+        f_n = f;
+        diss.compaction_j += work;
+    }
+    // The shear spring resists j's slip: its force on j is −k_s × slip.
+    let base = if PARTS && ks != ks_last { scale(ks / ks_last, shear_last) } else { shear_last };
+    let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, k.shear_n * xi);
+    diss.slip_j += ws;
+    if PARTS && kn != kn_last {
+        // What the change of modulus took out of the springs: ½ (K_last − K) × last
+        // stretch × new stretch (`kernel::law::rate`, "Stiffness").
+        diss.rate_j += 0.5 * ((kn_last - kn) * stretch_last * (f_n / kn) + (ks_last - ks) * dot(shear_last, s) / (ks_last * ks));
+    }
+    // With the rate part, the energy criterion's opening at break is (G_f)_d = ξ G_f on
+    // the plateau ξ F_t (eq 6.10); a bond that cannot break keeps its ∞.
+    let at_break = if PARTS && class.rate.enabled && k.at_break_m.is_finite() { rate::dynamic_opening_m(k.fracture_area_j, k.tension_n, xi, kn) } else { k.at_break_m };
+    if failure::breaks(c.plastic_opening_m, at_break) {
+        // The bond acts no more from this step: of the springs' work over its increments
+        // central differences take the last forces' half (the trapezoid's) and not the
+        // new forces' half, which the lines above booked (an error of order Δt a break).
+        let unapplied = 0.5 * (f_n * step - dot(s, slip));
+        let (rolling, twisting) = last_moments_half_work_j(c, class, k, (g.r, g.w), (n_old, n), dt_s);
+        diss.fracture_j += failure::released_energy_j(f_n, norm(s), kn, ks) + moments_j(c, k) - unapplied + rolling + twisting;
+        diss.broken += 1;
+        c.bond = Bond::Frictional;
+        c.plastic_opening_m = 0.0;
+        c.extra = None;
+        c.forget(ri + rj, d);
+        c.normal = n;
+        return None;
+    }
+    Some((f_n, s))
 }
 
 /// The work the contact's last rolling and twisting moments do over this step's turns when the
