@@ -5,9 +5,30 @@
 //! apart carries nothing, and a contact's history lives until it comes apart.
 
 use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hasher};
 
 use super::contact::{Bond, Contact};
 use super::vec3::{V3, norm, scale, sub};
+
+/// A hasher for cell keys: a multiply and rotate per 8 bytes. The std hasher (SipHash, made to
+/// resist crafted keys, which a grid of one's own spheres never meets) took 44 % of the search
+/// (sweeps/impact3d.toml, 300 steps: 611e6 of 1389e6 instructions).
+#[derive(Default)]
+struct CellHasher(u64);
+
+impl Hasher for CellHasher {
+    fn write(&mut self, bytes: &[u8]) {
+        for chunk in bytes.chunks(8) {
+            let mut word = [0u8; 8];
+            word[..chunk.len()].copy_from_slice(chunk);
+            self.0 = (self.0 ^ u64::from_le_bytes(word)).wrapping_mul(0x9E37_79B9_7F4A_7C15).rotate_left(31);
+        }
+    }
+
+    fn finish(&self) -> u64 {
+        self.0
+    }
+}
 
 /// The pairs (i < j, sorted) whose gap is below `skin_m`.
 pub fn candidates(pos_m: &[V3], radius_m: &[f64], skin_m: f64) -> Vec<(u32, u32)> {
@@ -15,7 +36,7 @@ pub fn candidates(pos_m: &[V3], radius_m: &[f64], skin_m: f64) -> Vec<(u32, u32)
     let cell = 2.0 * r_max + skin_m;
     let key = |p: V3| [(p[0] / cell).floor() as i64, (p[1] / cell).floor() as i64, (p[2] / cell).floor() as i64];
     // Cells by key; only looked up, never iterated, so the result does not depend on the map.
-    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+    let mut grid: HashMap<[i64; 3], Vec<u32>, BuildHasherDefault<CellHasher>> = HashMap::default();
     for (e, &p) in pos_m.iter().enumerate() {
         grid.entry(key(p)).or_default().push(e as u32);
     }
