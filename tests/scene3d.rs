@@ -194,6 +194,8 @@ fn a_bad_3d_scene_is_refused_naming_its_field() {
     refused("nose = \"hemispherical\"", "nose = \"ogive\"", "body[1].shape.crh");
     refused("element_radius_m = 0.0025\nseed = 1", "element_radius_m = 0.5\nseed = 1", "body[0].radius_m");
     refused("z_min_m = -0.041, z_max_m = -0.036", "z_min_m = -0.036, z_max_m = -0.041", "probe[1].box");
+    // A step above the stability bound of the scene's contacts is refused when built.
+    refused("[[material]]\nname = \"concrete\"", "[time_step]\ndt_s = 1e-5\n\n[[material]]\nname = \"concrete\"", "time_step.dt_s");
     // A --set is checked as the file is.
     let e = load(Path::new("sweeps/impact3d.toml"), &[demsweep::scene::overrides::Override::parse("time_step.safety=1.5").unwrap()]).unwrap_err().to_string();
     assert!(e.contains("time_step.safety"), "{e}");
