@@ -62,6 +62,72 @@ impl Box3 {
     }
 }
 
+/// What holds a random packing in ([`random_dense_in`]): a box, or a solid
+/// (`shape3d::Projectile3`). The walls push a sphere back by its overlap along their inward
+/// normals, as a sphere would.
+pub trait Walls {
+    /// The bounding box, m.
+    fn bounds(&self) -> Box3;
+    /// Volume, m³.
+    fn volume_m3(&self) -> f64;
+    /// The volume left once the walls' looser first layer, `layer_m` thick, is taken off, m³
+    /// (how many spheres to make).
+    fn filled_m3(&self, layer_m: f64) -> f64;
+    /// True when a sphere of radius `r_m` at `c` lies wholly inside.
+    fn holds(&self, c: [f64; 3], r_m: f64) -> bool;
+    /// True when a start point `c` drawn in the bounds (at least `r_m` inside them) is kept.
+    fn may_start(&self, c: [f64; 3], r_m: f64) -> bool {
+        self.holds(c, r_m)
+    }
+    /// The walls' push on a sphere of radius `r_m` at `c` (overlaps, m, along the inward
+    /// normals, summed) and its largest overlap, m.
+    fn push(&self, c: [f64; 3], r_m: f64) -> ([f64; 3], f64);
+    /// After the relaxation: bring a sphere within the walls if the soft walls left it a hair
+    /// outside, or say it must go (false).
+    fn settle(&self, c: &mut [f64; 3], r_m: f64) -> bool {
+        self.holds(*c, r_m)
+    }
+}
+
+impl Walls for Box3 {
+    fn bounds(&self) -> Box3 {
+        *self
+    }
+    fn volume_m3(&self) -> f64 {
+        Box3::volume_m3(self)
+    }
+    fn filled_m3(&self, layer_m: f64) -> f64 {
+        let (lo, hi) = (self.lo(), self.hi());
+        (0..3).map(|k| hi[k] - lo[k] - 2.0 * layer_m).product()
+    }
+    fn holds(&self, c: [f64; 3], r_m: f64) -> bool {
+        let (lo, hi) = (self.lo(), self.hi());
+        (0..3).all(|k| c[k] >= lo[k] + r_m && c[k] <= hi[k] - r_m)
+    }
+    fn may_start(&self, _: [f64; 3], _: f64) -> bool {
+        // The bounds are the box: every point drawn in them is a start.
+        true
+    }
+    fn push(&self, c: [f64; 3], r_m: f64) -> ([f64; 3], f64) {
+        let (lo, hi) = (self.lo(), self.hi());
+        let (mut f, mut worst) = ([0.0; 3], 0.0f64);
+        for k in 0..3 {
+            let low = (lo[k] + r_m - c[k]).max(0.0);
+            let high = (c[k] + r_m - hi[k]).max(0.0);
+            f[k] = low - high;
+            worst = worst.max(low.max(high));
+        }
+        (f, worst)
+    }
+    fn settle(&self, c: &mut [f64; 3], r_m: f64) -> bool {
+        let (lo, hi) = (self.lo(), self.hi());
+        for k in 0..3 {
+            c[k] = c[k].clamp(lo[k] + r_m, hi[k] - r_m);
+        }
+        true
+    }
+}
+
 /// A generated assembly of spheres.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Packing {
@@ -212,33 +278,54 @@ fn check_count(n: usize) -> Result<()> {
 /// down by the one factor that brings the overlaps within that bound, and then the smallest
 /// may lie below 0.8R.
 pub fn random_dense(b: &Box3, radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<Packing> {
-    let r_max = (1.0 + RADIUS_SPREAD) * radius_m;
-    check_fits(b, radius_m, r_max)?;
+    check_fits(b, radius_m, (1.0 + RADIUS_SPREAD) * radius_m)?;
+    random_dense_in(b, radius_m, seed, bond_gap_ratio)
+}
+
+/// [`random_dense`] in any [`Walls`]: the spheres start at random points the walls keep and
+/// inflate against them, so a curved solid is filled as densely as a box, its surface layer
+/// as loose as a box's face (not cut from a box's packing, which leaves it sparse).
+pub fn random_dense_in(walls: &dyn Walls, radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<Packing> {
     if !(bond_gap_ratio.is_finite() && (0.0..=1.0).contains(&bond_gap_ratio)) {
         return Err(Error::input("bond_gap_ratio", format!("must lie in [0, 1], got {bond_gap_ratio}")));
     }
     let mut rng = SplitMix64(seed ^ 0x5EED_3D5F_E7E5_0001);
+    let b = walls.bounds();
     let (lo, hi) = (b.lo(), b.hi());
-    let filled_m3: f64 = (0..3).map(|k| hi[k] - lo[k] - 2.0 * WALL_LAYER * radius_m).product();
-    let radii = draw_radii(&mut rng, filled_m3 * DENSE_FRACTION, radius_m)?;
+    let radii = draw_radii(&mut rng, walls.filled_m3(WALL_LAYER * radius_m) * DENSE_FRACTION, radius_m)?;
     let s0 = (0.25 / DENSE_FRACTION).cbrt();
-    let mut centres: Vec<[f64; 3]> = radii
-        .iter()
-        .map(|&ri| std::array::from_fn(|k| lo[k] + s0 * ri + rng.unit() * (hi[k] - lo[k] - 2.0 * s0 * ri)))
-        .collect();
-    inflate(&mut Relax::new(b, radius_m), &mut centres, &radii, s0);
-    // The relaxation's walls are soft; a no-op after the last step converged, which leaves
-    // every sphere strictly inside.
-    for (c, &ri) in centres.iter_mut().zip(&radii) {
-        for k in 0..3 {
-            c[k] = c[k].clamp(lo[k] + ri, hi[k] - ri);
+    let mut centres: Vec<[f64; 3]> = Vec::with_capacity(radii.len());
+    for &ri in &radii {
+        // Draws until the walls keep one (a box keeps the first; a solid of its bounding box's
+        // volume fraction f, 1/f draws on average).
+        let mut tries = 0;
+        loop {
+            let c: [f64; 3] = std::array::from_fn(|k| lo[k] + s0 * ri + rng.unit() * (hi[k] - lo[k] - 2.0 * s0 * ri));
+            if walls.may_start(c, s0 * ri) {
+                centres.push(c);
+                break;
+            }
+            tries += 1;
+            if tries > 10_000 {
+                return Err(Error::input("radius_m", format!("{radius_m} m: no room for a sphere in the walls after 10 000 draws")));
+            }
         }
     }
+    inflate(&mut Relax::new(walls, radius_m), &mut centres, &radii, s0);
+    // The relaxation's walls are soft; a no-op after the last step converged, which leaves
+    // every sphere strictly inside.
     let mut radii = radii;
+    let keep: Vec<bool> = centres.iter_mut().zip(&radii).map(|(c, &ri)| walls.settle(c, ri)).collect();
+    if keep.iter().any(|&k| !k) {
+        let mut k = keep.iter();
+        centres.retain(|_| *k.next().expect("one flag per sphere"));
+        let mut k = keep.iter();
+        radii.retain(|_| *k.next().expect("one flag per sphere"));
+    }
     remove_residual(&mut centres, &mut radii, radius_m);
     let (centres, radii) = layer_order(centres, radii, lo, 2.0 * radius_m);
     let bonds = bonds_within(&centres, &radii, bond_gap_ratio * radius_m);
-    Ok(Packing { centres_m: centres, radii_m: radii, bonds, volume_m3: b.volume_m3() })
+    Ok(Packing { centres_m: centres, radii_m: radii, bonds, volume_m3: walls.volume_m3() })
 }
 
 /// Radii uniform in [(1 − s)R, (1 + s)R] while their spheres' volume stays within
@@ -269,7 +356,7 @@ const INFLATION_STEPS: usize = 20;
 const MAX_ITERATIONS: usize = 20_000;
 
 /// Grow the radii from `s0` × their size to full size in steps, relaxing after each.
-fn inflate(relax: &mut Relax, centres: &mut [[f64; 3]], radii: &[f64], s0: f64) {
+fn inflate(relax: &mut Relax<'_>, centres: &mut [[f64; 3]], radii: &[f64], s0: f64) {
     let mut scaled = vec![0.0; radii.len()];
     for step in 1..=INFLATION_STEPS {
         let last = step == INFLATION_STEPS;
@@ -307,9 +394,8 @@ fn remove_residual(centres: &mut [[f64; 3]], radii: &mut [f64], radius_m: f64) {
 /// FIRE gets there far faster than plain pushing apart, which oscillates among many contacts.
 /// Pairs come from a Verlet list (contact distance plus a skin), rebuilt when a sphere may
 /// have moved far enough to meet one not listed.
-struct Relax {
-    lo: [f64; 3],
-    hi: [f64; 3],
+struct Relax<'a> {
+    walls: &'a dyn Walls,
     /// Skin of the pair list, m.
     skin_m: f64,
     /// Largest radius the relaxation will see, m (sizes the grid cells).
@@ -332,11 +418,10 @@ const FIRE_DT_MAX: f64 = 0.5;
 const FIRE_N_MIN: usize = 5;
 const FIRE_ALPHA: f64 = 0.1;
 
-impl Relax {
-    fn new(b: &Box3, radius_m: f64) -> Self {
+impl<'a> Relax<'a> {
+    fn new(walls: &'a dyn Walls, radius_m: f64) -> Self {
         Relax {
-            lo: b.lo(),
-            hi: b.hi(),
+            walls,
             skin_m: 0.5 * radius_m,
             r_max_m: (1.0 + RADIUS_SPREAD) * radius_m,
             radius_m,
@@ -408,13 +493,10 @@ impl Relax {
     fn forces(&mut self, centres: &[[f64; 3]], radii: &[f64]) -> f64 {
         let mut worst = 0.0f64;
         for ((f, c), &ri) in self.force.iter_mut().zip(centres).zip(radii) {
-            for k in 0..3 {
-                // Walls push back by their overlap, as a sphere would.
-                let low = (self.lo[k] + ri - c[k]).max(0.0);
-                let high = (c[k] + ri - self.hi[k]).max(0.0);
-                f[k] = low - high;
-                worst = worst.max(low.max(high));
-            }
+            // Walls push back by their overlap, as a sphere would.
+            let (push, overlap) = self.walls.push(*c, ri);
+            *f = push;
+            worst = worst.max(overlap);
         }
         for &(i, j) in &self.pairs {
             let (i, j) = (i as usize, j as usize);

@@ -2,16 +2,17 @@
 //! tangent-ogive nose) turned about its axis, filled with a sphere packing.
 //!
 //! The packing is made in the projectile's own frame (the axis along w from the tail at 0 to
-//! the tip at L, u and v across it), as a dense random packing of the bounding box
-//! [−D/2, D/2]² × [0, L], keeping the spheres that lie wholly inside the solid (a sphere of
-//! radius r at distance ρ from the axis lies inside when the outline holds the disc of radius r
-//! at (ρ, w): each cross-section of the outline is an interval about the axis). It is then
-//! turned so that w points along `axis` and moved so that the tail is at `tail_m`.
+//! the tip at L, u and v across it), as a dense random packing inflated against the solid's own
+//! surface (`packing3d::random_dense_in`: the tail disc, the side, the nose's flat or arc),
+//! so its surface layer is as dense as a box's face. A sphere of radius r at distance ρ from
+//! the axis lies inside when the outline holds the disc of radius r at (ρ, w): each
+//! cross-section of the outline is an interval about the axis. The packing is then turned so
+//! that w points along `axis` and moved so that the tail is at `tail_m`.
 
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::packing3d::{self, Box3, Packing};
+use crate::packing3d::{self, Box3, Packing, Walls};
 use crate::shape::{Nose, Projectile};
 
 /// A projectile's solid of revolution.
@@ -109,17 +110,99 @@ impl Projectile3 {
     }
 
     /// The projectile as a dense random packing of spheres of mean radius `radius_m` (`seed`,
-    /// `bond_gap_ratio` as [`packing3d::random_dense`]), in the model's frame.
+    /// `bond_gap_ratio` as [`packing3d::random_dense`]) inflated against its own surface, in
+    /// the model's frame.
     pub fn packing(&self, radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Result<Packing> {
-        let a = 0.5 * self.diameter_m;
-        let bounds = Box3 { x_min_m: -a, x_max_m: a, y_min_m: -a, y_max_m: a, z_min_m: 0.0, z_max_m: self.length_m };
-        let full = packing3d::random_dense(&bounds, radius_m, seed, bond_gap_ratio)?;
-        let mut p = full.keep(|c, r| self.holds(c, r), self.volume_m3());
-        if p.centres_m.is_empty() {
-            return Err(Error::input("element_radius_m", format!("{radius_m} m leaves no sphere inside the projectile")));
+        if !(radius_m.is_finite() && radius_m > 0.0 && 2.4 * radius_m < self.diameter_m.min(self.length_m)) {
+            return Err(Error::input("radius_m", format!("{radius_m} m: a sphere of 1.2 of it must fit across the projectile ({} m)", self.diameter_m.min(self.length_m))));
         }
+        let mut p = packing3d::random_dense_in(self, radius_m, seed, bond_gap_ratio)?;
         p.centres_m.iter_mut().for_each(|c| *c = self.to_world(*c));
         Ok(p)
+    }
+
+    /// Half-width of the outline at `w` along the axis (0 ≤ w ≤ L), m.
+    fn half_width_m(&self, w: f64) -> f64 {
+        let (a, base) = (0.5 * self.diameter_m, self.length_m - self.nose_length_m());
+        if w <= base {
+            return a;
+        }
+        match self.nose {
+            Nose::Flat => a,
+            Nose::Hemispherical => (a * a - (w - base).powi(2)).max(0.0).sqrt(),
+            Nose::Ogive => {
+                let s = self.crh.unwrap_or(0.5) * self.diameter_m;
+                ((s * s - (w - base).powi(2)).max(0.0).sqrt() - (s - a)).max(0.0)
+            }
+        }
+    }
+
+    /// Surface area, m²: the tail disc, the side and the nose (a flat nose's disc), summed
+    /// over thin frusta of the outline.
+    pub fn area_m2(&self) -> f64 {
+        let a = 0.5 * self.diameter_m;
+        let pi = std::f64::consts::PI;
+        let n = 4000;
+        let dw = self.length_m / n as f64;
+        let side: f64 = (0..n)
+            .map(|k| {
+                let (h0, h1) = (self.half_width_m(k as f64 * dw), self.half_width_m((k + 1) as f64 * dw));
+                pi * (h0 + h1) * dw.hypot(h1 - h0)
+            })
+            .sum();
+        let front = if self.nose == Nose::Flat { pi * a * a } else { 0.0 };
+        pi * a * a + side + front
+    }
+}
+
+/// The solid as walls for the packing (in its own frame: u, v across, w along the axis).
+impl Walls for Projectile3 {
+    fn bounds(&self) -> Box3 {
+        let a = 0.5 * self.diameter_m;
+        Box3 { x_min_m: -a, x_max_m: a, y_min_m: -a, y_max_m: a, z_min_m: 0.0, z_max_m: self.length_m }
+    }
+    fn volume_m3(&self) -> f64 {
+        Projectile3::volume_m3(self)
+    }
+    fn filled_m3(&self, layer_m: f64) -> f64 {
+        Projectile3::volume_m3(self) - self.area_m2() * layer_m
+    }
+    fn holds(&self, c: [f64; 3], r_m: f64) -> bool {
+        Projectile3::holds(self, c, r_m)
+    }
+    fn push(&self, c: [f64; 3], r_m: f64) -> ([f64; 3], f64) {
+        let (a, l) = (0.5 * self.diameter_m, self.length_m);
+        let base = l - self.nose_length_m();
+        let rho = c[0].hypot(c[1]);
+        // The outward radial direction (any, on the axis).
+        let e = if rho > 0.0 { [c[0] / rho, c[1] / rho] } else { [1.0, 0.0] };
+        // Each wall's overlap and its push in the meridian plane (radial, axial).
+        let mut pushes: [(f64, [f64; 2]); 3] = [((r_m - c[2]).max(0.0), [0.0, 1.0]), (0.0, [0.0; 2]), (0.0, [0.0; 2])];
+        if c[2] <= base || self.nose == Nose::Flat {
+            pushes[1] = ((rho + r_m - a).max(0.0), [-1.0, 0.0]);
+        }
+        match self.nose {
+            Nose::Flat => pushes[2] = ((c[2] + r_m - l).max(0.0), [0.0, -1.0]),
+            // The nose's arc, seen from its centre in the meridian plane: (0, base) for the
+            // hemisphere, (−(s − a), base) for the ogive (the arc bounding this side).
+            Nose::Hemispherical | Nose::Ogive if c[2] > base => {
+                let s = if self.nose == Nose::Ogive { self.crh.unwrap_or(0.5) * self.diameter_m } else { a };
+                let (dx, dw) = (rho + (s - a), c[2] - base);
+                let d = dx.hypot(dw);
+                if d > 0.0 {
+                    pushes[2] = ((d + r_m - s).max(0.0), [-dx / d, -dw / d]);
+                }
+            }
+            _ => {}
+        }
+        let (mut f, mut worst) = ([0.0; 3], 0.0f64);
+        for (overlap, [radial, axial]) in pushes {
+            f[0] += overlap * radial * e[0];
+            f[1] += overlap * radial * e[1];
+            f[2] += overlap * axial;
+            worst = worst.max(overlap);
+        }
+        (f, worst)
     }
 }
 
@@ -136,6 +219,10 @@ mod tests {
         let h = projectile(Nose::Hemispherical, None, [0.0, 0.0, 1.0]);
         let o = projectile(Nose::Ogive, Some(0.5), [0.0, 0.0, 1.0]);
         assert!((h.volume_m3() - o.volume_m3()).abs() < 1e-15, "{} {}", h.volume_m3(), o.volume_m3());
+        // The surface: tail disc, side and half sphere, π a² + 2π a (L − a) + 2π a².
+        let a = 0.5 * h.diameter_m;
+        let area = std::f64::consts::PI * a * (a + 2.0 * (h.length_m - a) + 2.0 * a);
+        assert!((h.area_m2() / area - 1.0).abs() < 1e-6, "{} against {area}", h.area_m2());
         // The solid's volume by a midpoint sum over thin discs of the outline's half-width.
         for p in [h, projectile(Nose::Flat, None, [1.0, 0.0, 0.0]), projectile(Nose::Ogive, Some(3.0), [0.0, -1.0, 0.0])] {
             let n = 200_000;
@@ -168,13 +255,15 @@ mod tests {
                 let local = [0, 1, 2].map(|a| [u, v, w][a].iter().zip(&d).map(|(x, y)| x * y).sum::<f64>());
                 assert!(p.holds(local, ri * (1.0 - 1e-9)), "{nose:?}: sphere at {c:?} pokes out");
             }
-            // The spheres fill the solid less densely than the box's packing fills its box: those
-            // crossing the curved surface are cut away (a solid 20 R across keeps 0.46, against
-            // 0.62 inside). Never more than the box's; and no less than the box's spheres whose
-            // centres lie 1.2 R inside the surface (all kept), about 0.74 of it here.
-            let solid: f64 = pk.radii_m.iter().map(|r| 4.0 / 3.0 * std::f64::consts::PI * r * r * r).sum();
-            let fraction = solid / p.volume_m3();
-            assert!((0.42..0.62).contains(&fraction), "{nose:?}: packing fraction {fraction}");
+            // The spheres fill the solid as densely as a box of its bounds is filled (both with
+            // a looser layer at their walls); cut from the box's packing instead, the solid 20 R
+            // across kept 0.46.
+            let vol = |radii: &[f64]| radii.iter().map(|r| 4.0 / 3.0 * std::f64::consts::PI * r * r * r).sum::<f64>();
+            let fraction = vol(&pk.radii_m) / p.volume_m3();
+            let bounds = Walls::bounds(&p);
+            let in_box = vol(&packing3d::random_dense(&bounds, r, 3, 0.1).unwrap().radii_m) / bounds.volume_m3();
+            println!("{nose:?}: {} spheres, packing fraction {fraction:.4} (its bounding box's packing {in_box:.4})", pk.centres_m.len());
+            assert!((fraction - in_box).abs() < 0.02, "{nose:?}: packing fraction {fraction} against {in_box} in a box");
             // Bonds join spheres that remain.
             assert!(pk.bonds.iter().all(|&(i, j)| (i as usize) < pk.centres_m.len() && (j as usize) < pk.centres_m.len() && i < j));
             let tip = p.tip_m();
