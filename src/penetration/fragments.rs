@@ -48,10 +48,10 @@ pub struct Fragment {
     pub elements: u32,
     /// Mass, kg (per the model's slice).
     pub mass_kg: f64,
-    /// Momentum [kg·m/s, kg·m/s].
-    pub momentum: [f64; 2],
-    /// Mass-weighted centre [kg·m, kg·m] (divide by the mass).
-    pub moment: [f64; 2],
+    /// Momentum [x, y, z], kg·m/s (z = 0 in 2D).
+    pub momentum: [f64; 3],
+    /// Mass-weighted centre [x, y, z], kg·m (divide by the mass).
+    pub moment: [f64; 3],
     /// Holds an element of a support (a fully prescribed one).
     pub supported: bool,
     /// Holds an element that started on the back face.
@@ -61,14 +61,14 @@ pub struct Fragment {
 }
 
 impl Fragment {
-    /// Velocity of its centre of mass [m/s, m/s].
-    pub fn velocity_mps(&self) -> [f64; 2] {
-        [self.momentum[0] / self.mass_kg, self.momentum[1] / self.mass_kg]
+    /// Velocity of its centre of mass [x, y, z], m/s.
+    pub fn velocity_mps(&self) -> [f64; 3] {
+        self.momentum.map(|p| p / self.mass_kg)
     }
 
-    /// Centre of mass [m, m].
-    pub fn centre_m(&self) -> [f64; 2] {
-        [self.moment[0] / self.mass_kg, self.moment[1] / self.mass_kg]
+    /// Centre of mass [x, y, z], m.
+    pub fn centre_m(&self) -> [f64; 3] {
+        self.moment.map(|p| p / self.mass_kg)
     }
 }
 
@@ -97,10 +97,10 @@ pub fn fragments(model: &(impl Bodies + ?Sized), range: std::ops::Range<usize>, 
         let (back, front) = face(e);
         f.elements += 1;
         f.mass_kg += m;
-        f.momentum[0] += m * v[0];
-        f.momentum[1] += m * v[1];
-        f.moment[0] += m * p[0];
-        f.moment[1] += m * p[1];
+        for k in 0..3 {
+            f.momentum[k] += m * v[k];
+            f.moment[k] += m * p[k];
+        }
         f.supported |= model.held(e);
         f.back |= back;
         f.front |= front;

@@ -241,10 +241,9 @@ impl Detector {
             let (y, r) = (model.initial_m(e)[1], model.radius_m(e));
             (y - r < layout.back_y_m + d, y + r > layout.front_y_m - d)
         }).collect();
-        let under = target
-            .clone()
-            .filter(|&e| faces[e - target.start].0 && (model.initial_m(e)[0] - layout.impact_x_m).abs() <= 0.5 * layout.projectile_width_m)
-            .collect();
+        // Within half a projectile width of the impact point across the face (in 2D, z = 0).
+        let across = |p: [f64; 3]| (p[0] - layout.impact_x_m).hypot(p[2] - layout.impact_z_m);
+        let under = target.clone().filter(|&e| faces[e - target.start].0 && across(model.initial_m(e)) <= 0.5 * layout.projectile_width_m).collect();
         Ok(Detector { layout, spec, target, projectile, faces, under, tracking: Tracking::default() })
     }
 
@@ -252,18 +251,21 @@ impl Detector {
     pub fn look(&self, m: &(impl Bodies + ?Sized)) -> Look {
         let lay = &self.layout;
         // The projectile.
-        let (mut mass, mut mom, mut lowest, mut rear) = (0.0, [0.0; 2], f64::INFINITY, f64::NEG_INFINITY);
-        let (mut xmin, mut xmax) = (f64::INFINITY, f64::NEG_INFINITY);
+        let (mut mass, mut mom, mut lowest, mut rear) = (0.0, [0.0; 3], f64::INFINITY, f64::NEG_INFINITY);
+        // The projectile's footprint across the face, x and z.
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
         for e in self.projectile.clone() {
             let (p, v, r, me) = (m.position_m(e), m.velocity_mps(e), m.radius_m(e), m.mass_kg(e));
             mass += me;
-            mom = [mom[0] + me * v[0], mom[1] + me * v[1]];
+            mom = [mom[0] + me * v[0], mom[1] + me * v[1], mom[2] + me * v[2]];
             lowest = lowest.min(p[1] - r);
             rear = rear.max(p[1] + r);
-            xmin = xmin.min(p[0] - r);
-            xmax = xmax.max(p[0] + r);
+            for (k, a) in [0, 2].into_iter().enumerate() {
+                lo[k] = lo[k].min(p[a] - r);
+                hi[k] = hi[k].max(p[a] + r);
+            }
         }
-        let v = [mom[0] / mass, mom[1] / mass];
+        let v = mom.map(|p| p / mass);
         // Fragments.
         let (frags, of) = fragments::fragments(m, self.target.clone(), |e| self.faces[e - self.target.start]);
         let attached = |e: usize| frags[of[e - self.target.start] as usize].supported;
@@ -273,31 +275,35 @@ impl Detector {
         } else {
             -under.iter().map(|&e| m.position_m(e)[1] - m.initial_m(e)[1]).sum::<f64>() / under.len() as f64
         };
-        // The attached faces' mean vertical speed in bins one projectile width wide (zero where
-        // nothing is attached), read over the three bins around a fragment.
+        // The attached faces' mean speed through the thickness (y) in square bins one projectile
+        // width wide across the face (x, z; one row of them in 2D), zero where nothing is
+        // attached, read over the bins around a fragment.
         let sep = fps_to_mps(self.spec.separation_fps);
         let w = lay.projectile_width_m;
         let bin = |x: f64| (x / w).floor().clamp(-1e6, 1e6) as i64;
-        let mut bins: std::collections::BTreeMap<(bool, i64), (usize, f64)> = Default::default();
+        let cell = |p: [f64; 3]| (bin(p[0]), bin(p[2]));
+        let mut bins: std::collections::BTreeMap<(bool, (i64, i64)), (usize, f64)> = Default::default();
         for e in self.target.clone() {
             let (b, f) = self.faces[e - self.target.start];
             if (b || f) && attached(e) {
                 for (face, on) in [(true, b), (false, f)] {
                     if on {
-                        let s = bins.entry((face, bin(m.position_m(e)[0]))).or_default();
+                        let s = bins.entry((face, cell(m.position_m(e)))).or_default();
                         s.0 += 1;
                         s.1 += m.velocity_mps(e)[1];
                     }
                 }
             }
         }
-        let face_speed = |x: f64, back: bool| {
-            let (n, s) = (bin(x) - 1..=bin(x) + 1).filter_map(|k| bins.get(&(back, k))).fold((0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
+        let face_speed = |p: [f64; 3], back: bool| {
+            let (bx, bz) = cell(p);
+            let around = (bx - 1..=bx + 1).flat_map(|x| (bz - 1..=bz + 1).map(move |z| (x, z)));
+            let (n, s) = around.filter_map(|k| bins.get(&(back, k))).fold((0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1));
             if n == 0 { 0.0 } else { s / n as f64 }
         };
         let (mut scab, mut spall) = ((0u64, 0.0), (0u64, 0.0));
         for f in frags.iter().filter(|f| !f.supported) {
-            let (vy, x) = (f.velocity_mps()[1], f.centre_m()[0]);
+            let (vy, x) = (f.velocity_mps()[1], f.centre_m());
             let left_through_back = f.centre_m()[1] < lay.back_y_m;
             if (f.back && vy < face_speed(x, true) - sep) || left_through_back {
                 scab = (scab.0 + 1, scab.1 + f.mass_kg);
@@ -311,7 +317,7 @@ impl Detector {
         let mut local = lay.back_y_m;
         for e in self.target.clone() {
             let (p, r) = (m.position_m(e), m.radius_m(e));
-            if p[0] + r > xmin && p[0] - r < xmax && attached(e) {
+            if p[0] + r > lo[0] && p[0] - r < hi[0] && p[2] + r > lo[1] && p[2] - r < hi[1] && attached(e) {
                 local = local.min(p[1] - r);
             }
         }
@@ -323,9 +329,9 @@ impl Detector {
             spall,
             through: rear < local,
             clear: rear < local - 2.0 * 2.0 * lay.concrete_radius_m,
-            v_axial_mps: v[0] * lay.axis[0] + v[1] * lay.axis[1],
+            v_axial_mps: v[0] * lay.axis[0] + v[1] * lay.axis[1] + v[2] * lay.axis[2],
             v_face_mps: -v[1],
-            speed_mps: v[0].hypot(v[1]),
+            speed_mps: v[0].hypot(v[1]).hypot(v[2]),
             attached_bonds,
         }
     }

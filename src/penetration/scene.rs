@@ -489,12 +489,15 @@ pub struct Layout {
     pub back_y_m: f64,
     /// The impact point on the front face, x, m.
     pub impact_x_m: f64,
+    /// The impact point on the front face, z, m (0 in 2D; the front face lies across x and z,
+    /// the thickness along y).
+    pub impact_z_m: f64,
     /// Projectile width, m.
     pub projectile_width_m: f64,
     /// Projectile length, m.
     pub projectile_length_m: f64,
-    /// Direction of travel (unit).
-    pub axis: [f64; 2],
+    /// Direction of travel (unit; z = 0 in 2D).
+    pub axis: [f64; 3],
     /// Impact speed, m/s.
     pub v0_mps: f64,
     /// Slice thickness, m (masses in the tables are per slice).
@@ -781,9 +784,10 @@ impl PenetrationScene {
             front_y_m: self.target_lattice()?.1,
             back_y_m: 0.0,
             impact_x_m: in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)),
+            impact_z_m: 0.0,
             projectile_width_m: outline.width_m,
             projectile_length_m: outline.length_m,
-            axis: outline.axis,
+            axis: [outline.axis[0], outline.axis[1], 0.0],
             v0_mps: v,
             thickness_m: thickness,
             concrete_radius_m: rc,
