@@ -3,9 +3,10 @@
 //!
 //! Each body is its own sphere kind, so that its class is computed on its own packing's bond
 //! density: B of the packing recipe (random dense, the body's seed and bond gap ratio) measured
-//! on a reference cube of side [`REFERENCE_SIDE_R`] R, 3 R in from its faces. B is
-//! dimensionless and fixed by the recipe, not by the body's size or shape, so a body of any
-//! size or outline gets the same material (`kernel3d::stiffness`).
+//! on a reference cube of side [`REFERENCE_SIDE_R`] R, [`REFERENCE_MARGIN_R`] R in from its
+//! faces, as `kernel3d::stiffness::MEASURED` was (the walls' looser layers reach about that
+//! deep: 3 R in, B came out 5 % lower). B is dimensionless and fixed by the recipe, not by the
+//! body's size or shape, so a body of any size or outline gets the same material.
 
 use std::sync::Arc;
 
@@ -18,7 +19,10 @@ use crate::packing3d::{self, Box3, Packing};
 use crate::simulation::{Built, Measure};
 
 /// Side of the reference cube a packing recipe's bond density is measured on, × R.
-pub const REFERENCE_SIDE_R: f64 = 20.0;
+pub const REFERENCE_SIDE_R: f64 = 24.0;
+
+/// How far inside the reference cube's faces B is measured, × R.
+pub const REFERENCE_MARGIN_R: f64 = 4.0;
 
 /// The bond density B of random dense packings of mean radius `radius_m`, `seed` and
 /// `bond_gap_ratio` (dimensionless).
@@ -26,7 +30,7 @@ pub fn recipe_bond_density(radius_m: f64, seed: u64, bond_gap_ratio: f64) -> Res
     let s = REFERENCE_SIDE_R * radius_m;
     let cube = Box3 { x_min_m: 0.0, x_max_m: s, y_min_m: 0.0, y_max_m: s, z_min_m: 0.0, z_max_m: s };
     let p = packing3d::random_dense(&cube, radius_m, seed, bond_gap_ratio)?;
-    let m = 3.0 * radius_m;
+    let m = REFERENCE_MARGIN_R * radius_m;
     let inner = Box3 { x_min_m: m, x_max_m: s - m, y_min_m: m, y_max_m: s - m, z_min_m: m, z_max_m: s - m };
     Ok(stiffness::bond_density(&p.centres_m, &p.radii_m, &p.bonds, |x| inner.contains(x), inner.volume_m3()))
 }

@@ -8,7 +8,7 @@
 mod build;
 mod probe;
 
-pub use build::{REFERENCE_SIDE_R, recipe_bond_density};
+pub use build::{REFERENCE_MARGIN_R, REFERENCE_SIDE_R, recipe_bond_density};
 pub use probe::{Probe3, Quantity3};
 
 use std::path::Path;
