@@ -154,6 +154,7 @@ impl Builder {
             }
             None => RateField::default(),
         };
+        let uniform_radius_m = s.radius_m.first().copied().filter(|&r| s.radius_m.iter().all(|&x| x == r));
         let mut model = Model {
             spheres: s,
             classes,
@@ -165,6 +166,7 @@ impl Builder {
             skin_m: self.skin_ratio * mean_r,
             threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
+            uniform_radius_m,
             actions: Vec::new(),
             shares: (Vec::new(), Vec::new()),
             locals: Vec::new(),

@@ -58,6 +58,9 @@ pub struct Model {
     pub threading: Threading,
     /// Contacts from which the steps run on the pool.
     pub parallel_min_contacts: usize,
+    /// The one radius every sphere has, m, if they share one (each class's springs are then
+    /// taken once a step, not once per contact).
+    pub uniform_radius_m: Option<f64>,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
@@ -163,7 +166,7 @@ impl Model {
         // One sphere size: each class's springs are taken once a step, not once per contact.
         let locals = &mut self.locals;
         locals.clear();
-        if let Some(&r) = sp.radius_m.first().filter(|&&r| sp.radius_m.iter().all(|&x| x == r)) {
+        if let Some(r) = self.uniform_radius_m {
             locals.extend(classes.iter().map(|c| c.at(law::mean_radius_m([r, r]))));
         }
         let locals = &*locals;

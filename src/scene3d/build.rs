@@ -54,14 +54,13 @@ impl Scene3 {
                 Error::Input { file, field, message } => Error::Input { file, field: format!("body[{k}].{field}"), message },
                 other => other,
             };
-            let Packing3::RandomDense = b.packing;
-            let p = match (&b.region, &b.shape) {
-                (Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
-                (None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
-                (None, None) => unreachable!("validated: a box or a shape"),
+            let p = match (b.packing, &b.region, &b.shape) {
+                (Packing3::RandomDense, Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                (Packing3::RandomDense, None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
+                (_, None, None) => unreachable!("validated: a box or a shape"),
             }
             .map_err(at)?;
-            let material = self.material.iter().find(|m| m.name == b.material).expect("validated: the material exists");
+            let material = self.solid(k);
             let bd = recipe_bond_density(b.element_radius_m, b.seed, b.bond_gap_ratio).map_err(at)?;
             let r_max = p.radii_m.iter().copied().fold(0.0, f64::max);
             classes.push(material.class(bd, r_max, RateContext { max_speed_mps, radius_m: b.element_radius_m })?);
@@ -81,7 +80,7 @@ impl Scene3 {
         }
         let mut velocities = Vec::with_capacity(kinds);
         for (k, (b, p)) in self.body.iter().zip(&packings).enumerate() {
-            let material = self.material.iter().find(|m| m.name == b.material).expect("validated");
+            let material = self.solid(k);
             let range = bld.body(&b.name, &p.centres_m, &p.radii_m, k as u16, material.density_kg_per_m3);
             bld.mass_total(range.clone(), material.density_kg_per_m3 * p.volume_m3);
             for &(i, j) in &p.bonds {
