@@ -17,7 +17,8 @@
 use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
 use crate::material::Arrangement;
-use crate::penetration::{self, Hooks, Row};
+use crate::penetration::{self, Row};
+use crate::simulation::Threading;
 
 /// What to calibrate to.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -98,7 +99,7 @@ pub fn calibrate(scene: &PenetrationScene, target: &Target, each: &mut dyn FnMut
                 s.concrete.strength_factor = f;
                 s.projectile.v0_fps = target.v0_fps;
                 s.target.seed = scene.target.seed + k;
-                Ok(penetration::run(&s, Hooks::default())?.row)
+                penetration::row(&s, Threading::default(), None)
             })
             .collect::<Result<Vec<Row>>>()?;
         let mean_depth_in = rows.iter().map(|r| r.outcome.depth_in).sum::<f64>() / rows.len() as f64;

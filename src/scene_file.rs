@@ -41,7 +41,8 @@ pub fn load_text(text: &str, origin: &Path, overrides: &[Override]) -> Result<Sc
         other => other,
     };
     if doc.contains_key("penetration") {
-        let p: PenetrationScene = parse(&text, origin).map_err(blame)?;
+        let mut p: PenetrationScene = parse(&text, origin).map_err(blame)?;
+        p.resolve_defaults();
         p.validate().map_err(|e| blame(e.in_file(origin)))?;
         Ok(SceneFile::Penetration(p))
     } else if doc.get("scene").and_then(|g| g.get("dim")).is_some() {

@@ -1,6 +1,6 @@
-//! The CI scene (`sweeps/penetration_ci.toml`, the calibrated scene one level down) against its
-//! committed outcomes (`results/penetration/outcomes_ci.csv`, written by
-//! `scripts/penetration_ci_table.sh`, never by hand). The kernel is deterministic, so the
+//! The CI scenes (`sweeps/penetration_ci.toml` and `sweeps/penetration3d_ci.toml`, the calibrated
+//! scenes one level down) against their committed outcomes (`results/penetration/outcomes_ci.csv`
+//! and `outcomes3d_ci.csv`, written by `scripts/penetration_ci_table.sh`, never by hand). The kernel is deterministic, so the
 //! classification and the counts must be exactly as committed and every number to 1e-9. The
 //! energy ledger closes within 2 % of the impact energy on the coarse CI scene: the ledger's
 //! error is first order in the step (1.25 % → 0.63 % at half the step, level 0, 1500 ft/s),
@@ -8,24 +8,45 @@
 
 use std::path::Path;
 
-use demsweep::penetration::{Hooks, run};
+use demsweep::penetration::scene::PenetrationScene;
+use demsweep::penetration::{Hooks, row, run};
 use demsweep::scene_file::{SceneFile, load};
+use demsweep::simulation::Threading;
 use demsweep::table::{Table, row::cells};
 
-fn scene() -> demsweep::penetration::scene::PenetrationScene {
-    match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration_ci.toml"), &[]).unwrap() {
+fn load_scene(path: &str) -> PenetrationScene {
+    match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join(path), &[]).unwrap() {
         SceneFile::Penetration(p) => p,
-        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => panic!("the CI scene is a penetration scene"),
+        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => panic!("{path} is a penetration scene"),
     }
+}
+
+fn scene() -> PenetrationScene {
+    load_scene("sweeps/penetration_ci.toml")
 }
 
 #[test]
 fn the_ci_scene_is_the_calibrated_scene_one_level_down() {
-    let full = match load(&Path::new(env!("CARGO_MANIFEST_DIR")).join("sweeps/penetration.toml"), &[]).unwrap() {
-        SceneFile::Penetration(p) => p,
-        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => panic!("a penetration scene"),
-    };
-    let ci = scene();
+    one_level_down("sweeps/penetration.toml", "sweeps/penetration_ci.toml");
+}
+
+#[test]
+fn the_3d_ci_scene_is_the_calibrated_slab_one_level_down() {
+    one_level_down("sweeps/penetration3d.toml", "sweeps/penetration3d_ci.toml");
+}
+
+#[test]
+fn the_ci_scene_reproduces_its_committed_outcomes() {
+    reproduces("sweeps/penetration_ci.toml", "results/penetration/outcomes_ci.csv");
+}
+
+#[test]
+fn the_3d_ci_scene_reproduces_its_committed_outcomes() {
+    reproduces("sweeps/penetration3d_ci.toml", "results/penetration/outcomes3d_ci.csv");
+}
+
+fn one_level_down(full: &str, ci: &str) {
+    let (full, ci) = (load_scene(full), load_scene(ci));
     assert_eq!((full.penetration.level, ci.penetration.level), (1, 0));
     let mut same = ci.clone();
     same.penetration.level = 1;
@@ -34,17 +55,17 @@ fn the_ci_scene_is_the_calibrated_scene_one_level_down() {
     assert!(full.concrete.strength_factor != 1.0, "calibrated");
 }
 
-#[test]
-fn the_ci_scene_reproduces_its_committed_outcomes() {
-    let golden = Table::read_csv(&Path::new(env!("CARGO_MANIFEST_DIR")).join("results/penetration/outcomes_ci.csv")).unwrap();
+/// Each committed row of `table` rerun on `scene` at its velocity.
+fn reproduces(scene: &str, table: &str) {
+    let golden = Table::read_csv(&Path::new(env!("CARGO_MANIFEST_DIR")).join(table)).unwrap();
     assert!(golden.rows.len() >= 4, "a few velocities");
     let exact = ["v0_fps", "level", "scabbed", "perforated", "scab_fragments", "spall_fragments", "end_reason", "steps", "bonds_broken", "elements"];
     let close = ["depth_in", "depth_rel_in", "scab_mass_lb", "v_residual_fps", "spall_mass_lb", "dt_s", "simulated_s", "energy_error"];
     for r in 0..golden.rows.len() {
         let v0: f64 = golden.get(r, "v0_fps").unwrap().parse().unwrap();
-        let mut s = scene();
+        let mut s = load_scene(scene);
         s.projectile.v0_fps = v0;
-        let row = run(&s, Hooks::default()).unwrap().row;
+        let row = row(&s, Threading::default(), None).unwrap();
         let live: Vec<(String, String)> = cells(&row).unwrap().into_iter().map(|(k, v)| (k, v.text())).collect();
         let get = |name: &str| live.iter().find(|c| c.0 == name).map(|c| c.1.clone()).unwrap_or_else(|| panic!("no column {name}"));
         for name in exact {

@@ -89,10 +89,10 @@ fn meaning(scene: &crate::penetration::scene::PenetrationScene, factor: f64) -> 
     let c = &scene.concrete;
     let sigma = factor * c.tensile_strength_psi;
     format!(
-        "Effective static tensile strength {:.0} psi ({:.2} f'c), fracture toughness {:.0} psi·√in (mapping {})",
+        "Effective static tensile strength {:.0} psi ({:.2} f'c), fracture toughness {:.0} psi·√in ({})",
         sigma,
         sigma / c.compressive_strength_psi,
         factor * c.fracture_toughness_psi_sqrt_in,
-        scene.mapping.rule.name()
+        if scene.penetration.dim == 3 { "3D slab".to_string() } else { format!("mapping {}", scene.mapping.rule.name()) }
     )
 }

@@ -4,6 +4,8 @@
 use std::path::PathBuf;
 
 use crate::error::{Error, Result};
+use crate::penetration::scene::PenetrationScene;
+use crate::penetration::{Finished, Hooks};
 use crate::run::{Checkpointing, RunCheckpoint};
 use crate::scene::overrides::Override;
 use crate::scene_file::SceneFile;
@@ -70,9 +72,22 @@ pub fn run(args: Args) -> Result<()> {
     }
 }
 
-fn run_penetration(args: &Args, scene: crate::penetration::scene::PenetrationScene) -> Result<()> {
+/// A penetration scene on the kernel of its dimension.
+fn run_penetration(args: &Args, scene: PenetrationScene) -> Result<()> {
+    match scene.penetration.dim {
+        3 => penetrate(args, scene, crate::penetration::run3),
+        _ => penetrate(args, scene, crate::penetration::run),
+    }
+}
+
+/// Run a penetration scene with `run` on its kernel `M`: its row, and with `--snapshots` PNG
+/// frames (a 3D run's section through the impact point) and a VTK series.
+fn penetrate<M: Simulation>(args: &Args, scene: PenetrationScene, run: impl FnOnce(&PenetrationScene, Hooks<'_, M>) -> Result<Finished<M>>) -> Result<()> {
     if args.checkpoint_every_steps > 0 || args.resume {
-        return Err(Error::input("--checkpoint-every-steps", "checkpoints are for kernel scenes; a penetration run takes seconds"));
+        return Err(Error::input("--checkpoint-every-steps", "checkpoints are for kernel scenes; a penetration run is one event"));
+    }
+    if !(args.snapshot_every_ms.is_finite() && args.snapshot_every_ms > 0.0) {
+        return Err(Error::input("--snapshot-every-ms", format!("must be a number > 0, got {}", args.snapshot_every_ms)));
     }
     let dir = args.out.join(&scene.penetration.name);
     let bar = if args.quiet { indicatif::ProgressBar::hidden() } else { indicatif::ProgressBar::new(1000) };
@@ -81,22 +96,19 @@ fn run_penetration(args: &Args, scene: crate::penetration::scene::PenetrationSce
         Some(d) => Some(crate::picture::Series::new(d, &scene)?),
         None => None,
     };
-    if !(args.snapshot_every_ms.is_finite() && args.snapshot_every_ms > 0.0) {
-        return Err(Error::input("--snapshot-every-ms", format!("must be a number > 0, got {}", args.snapshot_every_ms)));
-    }
     let every_s = if pictures.is_some() { args.snapshot_every_ms * 1e-3 } else { 0.0 };
     let mut started = false;
-    let mut frame = |m: &crate::kernel::Model| {
+    let mut frame = |m: &M| -> Result<()> {
         if !std::mem::replace(&mut started, true) {
-            announce(&scene.penetration.name, m, (scene.penetration.max_time_s / Simulation::dt_s(m)).ceil());
+            announce(&scene.penetration.name, m, (scene.penetration.max_time_s / m.dt_s()).ceil());
         }
         match pictures.as_mut() {
             Some(p) => p.frame(m),
             None => Ok(()),
         }
     };
-    let hooks = crate::penetration::Hooks { each_record: Some(&mut frame), record_every_s: every_s, tick: Some(&mut tick), ..Default::default() };
-    let finished = crate::penetration::run(&scene, hooks);
+    let hooks = Hooks { each_record: Some(&mut frame), record_every_s: every_s, tick: Some(&mut tick), ..Default::default() };
+    let finished = run(&scene, hooks);
     bar.finish_and_clear();
     let finished = finished?;
     if let Some(p) = pictures.as_mut() {

@@ -11,6 +11,7 @@ pub mod fragments;
 pub mod outcome;
 pub mod run;
 pub mod scene;
+pub mod slab;
 
-pub use run::{Finished, Hooks, Row, run, run_on};
+pub use run::{Finished, Hooks, Row, row, run, run3, run_on};
 pub use scene::PenetrationScene;

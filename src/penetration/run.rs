@@ -1,7 +1,8 @@
 //! A penetration run: the scene of `penetration::scene`, run until its outcome is settled
 //! (`outcome::Detector` as the stop rule), reported as one typed row. The only place that picks
-//! the kernel a penetration scene runs on ([`run`]); the rest ([`run_on`]) reads the model
-//! through `crate::simulation` and works for any kernel.
+//! the kernel a penetration scene runs on ([`run`] on the 2D kernel, [`run3`] on the 3D one,
+//! [`row`] by the scene's `dim`); the rest ([`run_on`]) reads the model through
+//! `crate::simulation` and works for any kernel.
 
 use serde::Serialize;
 
@@ -26,8 +27,8 @@ pub struct Row {
     pub level: u32,
     /// The calibration factor.
     pub strength_factor: f64,
-    /// The slice thickness of the mapping, in.
-    pub thickness_in: f64,
+    /// The slice thickness of the mapping, in (empty in 3D: no slice).
+    pub thickness_in: Option<f64>,
     /// The outcome.
     pub outcome: Outcome,
     /// The run.
@@ -65,10 +66,25 @@ impl<M> Default for Hooks<'_, M> {
     }
 }
 
-/// Run the scene to its settled outcome on the 2D kernel.
+/// Run a 2D scene to its settled outcome on the 2D kernel.
 pub fn run(scene: &PenetrationScene, hooks: Hooks<'_, Model>) -> Result<Finished<Model>> {
     let (kernel, layout) = scene.to_scene()?;
     run_on(scene, kernel.build()?, layout, hooks)
+}
+
+/// Run a 3D scene (`penetration.dim = 3`) to its settled outcome on the 3D kernel.
+pub fn run3(scene: &PenetrationScene, hooks: Hooks<'_, crate::kernel3d::Model>) -> Result<Finished<crate::kernel3d::Model>> {
+    let (kernel, layout) = scene.to_scene3()?;
+    run_on(scene, kernel.build()?, layout, hooks)
+}
+
+/// The row of a run of the scene on the kernel of its dimension, on `threading`, borrowing
+/// `lend`'s idle cores.
+pub fn row(scene: &PenetrationScene, threading: Threading, lend: Option<&dyn run::Lend>) -> Result<Row> {
+    Ok(match scene.penetration.dim {
+        3 => run3(scene, Hooks { threading, lend, ..Default::default() })?.row,
+        _ => run(scene, Hooks { threading, lend, ..Default::default() })?.row,
+    })
 }
 
 /// Run `built`, the scene's model on some kernel laid out as `layout`, to its settled outcome.
@@ -92,7 +108,7 @@ pub fn run_on<M: Simulation>(scene: &PenetrationScene, mut built: Built<M>, layo
         angle_deg: scene.projectile.angle_deg,
         level: scene.penetration.level,
         strength_factor: scene.concrete.strength_factor,
-        thickness_in: layout.thickness_m / M_PER_IN,
+        thickness_in: (layout.thickness_m.is_finite()).then(|| layout.thickness_m / M_PER_IN),
         outcome,
         run: result.summary,
     };

@@ -25,6 +25,7 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::slab::Slab;
 use crate::cases::seed;
 use crate::error::{Error, Result};
 use crate::kernel::boundary::Profile;
@@ -57,6 +58,9 @@ pub struct PenetrationScene {
     /// How outcomes are judged and when a run is settled.
     #[serde(default)]
     pub outcome: OutcomeSpec,
+    /// What only a 3D scene has (`penetration.dim = 3`; `crate::penetration::slab`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub slab: Option<Slab>,
     /// Rayleigh damping (the kernel's `[damping]`).
     #[serde(default)]
     pub damping: Damping,
@@ -68,6 +72,10 @@ pub struct PenetrationScene {
 pub struct Settings {
     /// Name, used for output folders.
     pub name: String,
+    /// 2 (the default): a beam in plane strain on the 2D kernel, the source's model; 3: a
+    /// square slab of bonded spheres on the 3D kernel (`crate::penetration::slab`).
+    #[serde(default = "two", skip_serializing_if = "is_two")]
+    pub dim: u8,
     /// Refinement level: 1 is the source's mesh (R = 0.25 in), each level halves R.
     #[serde(default = "one")]
     pub level: u32,
@@ -81,6 +89,12 @@ pub struct Settings {
 
 fn one() -> u32 {
     1
+}
+fn two() -> u8 {
+    2
+}
+fn is_two(d: &u8) -> bool {
+    *d == 2
 }
 fn default_max_time() -> f64 {
     0.04
@@ -306,9 +320,11 @@ pub struct ProjectileSpec {
     /// Width (diameter) D, in.
     #[serde(default = "default_width")]
     pub width_in: f64,
-    /// Length from tail to nose tip, in (the source's: 351 elements of its R = 0.15544 in).
-    #[serde(default = "default_plength")]
-    pub length_in: f64,
+    /// Length from tail to nose tip, in. Default: in 2D the source's (351 elements of its
+    /// R = 0.15544 in: 8.77 in); in 3D the length at which a steel cylinder with its nose weighs
+    /// `weight_lb` (given a length, the 3D projectile's density follows from the weight).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub length_in: Option<f64>,
     /// Element radius at level 1, in (halved per level like the concrete's). A discretisation
     /// choice, not physics: the default is the concrete's 0.25 in, not Table 7.2's 0.15544 in,
     /// because under the sectional-density mapping the projectile is steel of steel's density,
@@ -350,9 +366,8 @@ fn default_weight() -> f64 {
 fn default_width() -> f64 {
     3.5
 }
-fn default_plength() -> f64 {
-    8.77
-}
+/// The source's projectile length in 2D, in (351 elements of R = 0.15544 in).
+const SOURCE_LENGTH_IN: f64 = 8.77;
 fn default_projectile_radius() -> f64 {
     seed::concrete_radius_m() / M_PER_IN
 }
@@ -376,7 +391,7 @@ impl Default for ProjectileSpec {
             angle_deg: 0.0,
             weight_lb: default_weight(),
             width_in: default_width(),
-            length_in: default_plength(),
+            length_in: None,
             element_radius_in: default_projectile_radius(),
             nose: default_nose(),
             crh: None,
@@ -510,19 +525,35 @@ impl PenetrationScene {
     /// A scene of the defaults with `name`.
     pub fn with_name(name: &str) -> PenetrationScene {
         PenetrationScene {
-            penetration: Settings { name: name.into(), level: 1, max_time_s: default_max_time(), safety: default_safety() },
+            penetration: Settings { name: name.into(), dim: 2, level: 1, max_time_s: default_max_time(), safety: default_safety() },
             target: Target::default(),
             concrete: Concrete::default(),
             projectile: ProjectileSpec::default(),
             mapping: Mapping::default(),
             outcome: OutcomeSpec::default(),
             damping: Damping::default(),
+            slab: None,
         }
     }
 
-    /// Concrete element radius at the scene's level, m.
+    /// Concrete element radius at the scene's level, m (the mean sphere radius in 3D).
     pub fn concrete_radius_m(&self) -> f64 {
-        seed::concrete_radius_m() * 0.5f64.powi(self.penetration.level as i32 - 1)
+        let level1 = if self.penetration.dim == 3 { in_to_m(self.slab().element_radius_in) } else { seed::concrete_radius_m() };
+        level1 * 0.5f64.powi(self.penetration.level as i32 - 1)
+    }
+
+    /// Fill the defaults that depend on the dimension, so that a scene as read states them
+    /// (and a 2D scene reads, and hashes, as it did before 3D scenes had their own): the 2D
+    /// projectile's length is the source's; the 3D one's stays open, following its weight.
+    pub fn resolve_defaults(&mut self) {
+        if self.penetration.dim == 2 {
+            self.projectile.length_in.get_or_insert(SOURCE_LENGTH_IN);
+        }
+    }
+
+    /// The 2D projectile's length, in (given, or the source's).
+    pub fn projectile_length_in(&self) -> f64 {
+        self.projectile.length_in.unwrap_or(SOURCE_LENGTH_IN)
     }
 
     /// Projectile element radius at the scene's level, m.
@@ -539,8 +570,16 @@ impl PenetrationScene {
         if g.name.is_empty() || !g.name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-') {
             return Err(Error::input("penetration.name", format!("must be non-empty letters, digits, '_' or '-', got {:?}", g.name)));
         }
-        if g.level > 4 {
+        match (g.dim, &self.slab) {
+            (2, None) | (3, _) => {}
+            (2, Some(_)) => return Err(Error::input("slab", "[slab] is read by 3D scenes only (penetration.dim = 3)")),
+            (d, _) => return Err(Error::input("penetration.dim", format!("must be 2 or 3, got {d}"))),
+        }
+        if g.dim == 2 && g.level > 4 {
             return Err(Error::input("penetration.level", format!("must lie in 0..=4 (level 4 has about 3.4 million elements), got {}", g.level)));
+        }
+        if g.dim == 3 && g.level > 3 {
+            return Err(Error::input("penetration.level", format!("must lie in 0..=3 in 3D (level 3 has about 2.3 million spheres in the default slab), got {}", g.level)));
         }
         pos("penetration.max_time_s", g.max_time_s)?;
         if !(g.safety > 0.0 && g.safety <= 1.0) {
@@ -551,7 +590,7 @@ impl PenetrationScene {
         pos("target.depth_in", t.depth_in)?;
         pos("target.support_length_in", t.support_length_in)?;
         let rc = self.concrete_radius_m() / M_PER_IN;
-        if t.depth_in < 2.0 * rc || t.length_in < 2.0 * t.support_length_in + 4.0 * rc {
+        if g.dim == 2 && (t.depth_in < 2.0 * rc || t.length_in < 2.0 * t.support_length_in + 4.0 * rc) {
             return Err(Error::input("target", format!("{} × {} in cannot hold its supports and elements of radius {rc} in", t.length_in, t.depth_in)));
         }
         let c = &self.concrete;
@@ -582,13 +621,16 @@ impl PenetrationScene {
             ("projectile.v0_fps", p.v0_fps),
             ("projectile.weight_lb", p.weight_lb),
             ("projectile.width_in", p.width_in),
-            ("projectile.length_in", p.length_in),
+            ("projectile.length_in", p.length_in.unwrap_or(1.0)),
             ("projectile.element_radius_in", p.element_radius_in),
             ("projectile.youngs_modulus_psi", p.youngs_modulus_psi),
         ] {
             pos(f, v)?;
         }
-        if p.width_in < 6.0 * p.element_radius_in {
+        if g.dim == 3 && p.element_radius_in != default_projectile_radius() {
+            return Err(Error::input("projectile.element_radius_in", "is the 2D projectile's; a 3D scene sizes its spheres by slab.projectile_element_radius_in"));
+        }
+        if g.dim == 2 && p.width_in < 6.0 * p.element_radius_in {
             return Err(Error::input("projectile.element_radius_in", format!("{} in leaves fewer than three elements across the {} in width", p.element_radius_in, p.width_in)));
         }
         if !(p.angle_deg.is_finite() && p.angle_deg.abs() < 80.0) {
@@ -602,6 +644,19 @@ impl PenetrationScene {
             && !(x.is_finite() && x > 0.0 && x < t.length_in)
         {
             return Err(Error::input("projectile.impact_x_in", format!("must lie on the span (0, {}), got {x}", t.length_in)));
+        }
+        let o = &self.outcome;
+        pos("outcome.separation_fps", o.separation_fps)?;
+        pos("outcome.quiet_s", o.quiet_s)?;
+        pos("outcome.unresisted_s", o.unresisted_s)?;
+        if !(o.unresisted_change.is_finite() && o.unresisted_change >= 0.0 && o.unresisted_change < 1.0) {
+            return Err(Error::input("outcome.unresisted_change", format!("must lie in [0, 1), got {}", o.unresisted_change)));
+        }
+        if o.check_every_steps == 0 {
+            return Err(Error::input("outcome.check_every_steps", "must be ≥ 1"));
+        }
+        if g.dim == 3 {
+            return self.validate_slab();
         }
         if self.mapping.rule == MappingRule::SeedEffectiveDensity && p.weight_lb != seed::PROJECTILE_WEIGHT_LB {
             return Err(Error::input(
@@ -619,16 +674,6 @@ impl PenetrationScene {
             }
         } else if self.mapping.thickness_in.is_some() {
             return Err(Error::input("mapping.thickness_in", "only rule = \"thickness\" takes a thickness"));
-        }
-        let o = &self.outcome;
-        pos("outcome.separation_fps", o.separation_fps)?;
-        pos("outcome.quiet_s", o.quiet_s)?;
-        pos("outcome.unresisted_s", o.unresisted_s)?;
-        if !(o.unresisted_change.is_finite() && o.unresisted_change >= 0.0 && o.unresisted_change < 1.0) {
-            return Err(Error::input("outcome.unresisted_change", format!("must lie in [0, 1), got {}", o.unresisted_change)));
-        }
-        if o.check_every_steps == 0 {
-            return Err(Error::input("outcome.check_every_steps", "must be ≥ 1"));
         }
         self.outline()?.validate("projectile")?;
         Ok(())
@@ -658,7 +703,7 @@ impl PenetrationScene {
         let x0 = in_to_m(p.impact_x_in.unwrap_or(0.5 * self.target.length_in));
         let a = p.angle_deg.to_radians();
         let axis = [a.sin(), -a.cos()];
-        let length = in_to_m(p.length_in);
+        let length = in_to_m(self.projectile_length_in());
         let mut outline = Projectile {
             tail_m: [x0 - axis[0] * length, front - axis[1] * length],
             axis,
@@ -699,6 +744,9 @@ impl PenetrationScene {
     /// The kernel scene, and where its pieces are.
     pub fn to_scene(&self) -> Result<(Scene, Layout)> {
         self.validate()?;
+        if self.penetration.dim != 2 {
+            return Err(Error::input("penetration.dim", "a 3D scene builds the 3D kernel's scene (`to_scene3`)"));
+        }
         let (t, p, c) = (&self.target, &self.projectile, &self.concrete);
         let (rc, rp) = (self.concrete_radius_m(), self.projectile_radius_m());
         let (length, depth) = (in_to_m(t.length_in), in_to_m(t.depth_in));

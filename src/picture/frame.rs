@@ -1,5 +1,7 @@
 //! One PNG frame: elements as filled disks at their true size, coloured by damage, cracks across
-//! broken bonds, a title line and a scale bar in inches.
+//! broken bonds, a title line and a scale bar in inches. A 2D model is drawn whole; a 3D one as
+//! its section by the plane z = `View::section_z_m` through the impact point (each sphere the
+//! plane cuts as the disc of the cut).
 
 use std::ops::Range;
 
@@ -7,7 +9,7 @@ use plotters::prelude::*;
 
 use crate::penetration::scene::PenetrationScene;
 use crate::error::Result;
-use crate::kernel::Model;
+use crate::simulation::Bodies;
 use crate::units::M_PER_IN;
 
 /// Width of a frame, px.
@@ -30,6 +32,8 @@ pub struct View {
     pub height_px: u32,
     /// Impact speed, ft/s (for the title).
     pub v0_fps: f64,
+    /// The section plane z, m (3D; None draws a 2D model whole).
+    pub section_z_m: Option<f64>,
 }
 
 impl View {
@@ -39,10 +43,12 @@ impl View {
     pub fn of(scene: &PenetrationScene) -> Result<View> {
         let (t, p) = (&scene.target, &scene.projectile);
         let x = (-4.0 * M_PER_IN, (t.length_in + 4.0) * M_PER_IN);
-        let y = (-t.depth_in * M_PER_IN, (t.depth_in + p.standoff_in.min(12.0) + p.length_in + 3.0) * M_PER_IN);
+        let length_in = if scene.penetration.dim == 3 { scene.projectile_length3_in()? } else { scene.projectile_length_in() };
+        let y = (-t.depth_in * M_PER_IN, (t.depth_in + p.standoff_in.min(12.0) + length_in + 3.0) * M_PER_IN);
         let px_per_m = WIDTH_PX as f64 / (x.1 - x.0);
         let height_px = TITLE_PX + ((y.1 - y.0) * px_per_m).ceil() as u32;
-        Ok(View { x_min_m: x.0, y_max_m: y.1, px_per_m, height_px, v0_fps: p.v0_fps })
+        let section_z_m = (scene.penetration.dim == 3).then(|| 0.5 * t.length_in * M_PER_IN);
+        Ok(View { x_min_m: x.0, y_max_m: y.1, px_per_m, height_px, v0_fps: p.v0_fps, section_z_m })
     }
 
     fn px(&self, p: [f64; 2]) -> (i32, i32) {
@@ -65,7 +71,7 @@ const STEEL: RGBColor = RGBColor(40, 90, 180);
 const SUPPORT: RGBColor = RGBColor(110, 110, 120);
 
 /// The frame as PNG bytes.
-pub fn render_png(view: &View, m: &Model, damage: &[f64], broken: &[(u32, u32)], projectile: Range<usize>) -> std::result::Result<Vec<u8>, String> {
+pub fn render_png(view: &View, m: &(impl Bodies + ?Sized), damage: &[f64], broken: &[(u32, u32)], projectile: Range<usize>) -> std::result::Result<Vec<u8>, String> {
     super::font::ensure();
     let (w, h) = (WIDTH_PX, view.height_px);
     let mut rgb = vec![255u8; (w * h * 3) as usize];
@@ -80,24 +86,35 @@ pub fn render_png(view: &View, m: &Model, damage: &[f64], broken: &[(u32, u32)],
 type Area<'a> = DrawingArea<BitMapBackend<'a>, plotters::coord::Shift>;
 type Drawn = std::result::Result<(), DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>>;
 
-fn draw(root: &Area<'_>, view: &View, m: &Model, damage: &[f64], broken: &[(u32, u32)], projectile: Range<usize>) -> Drawn {
+/// Element `e` as drawn: its centre in the frame's plane and its radius there, m (None: the
+/// section plane misses it).
+fn disc(view: &View, m: &(impl Bodies + ?Sized), e: usize) -> Option<([f64; 2], f64)> {
+    let (p, r) = (m.position_m(e), m.radius_m(e));
+    match view.section_z_m {
+        None => Some(([p[0], p[1]], r)),
+        Some(z) => {
+            let dz = p[2] - z;
+            (dz.abs() < r).then(|| ([p[0], p[1]], (r * r - dz * dz).sqrt()))
+        }
+    }
+}
+
+fn draw(root: &Area<'_>, view: &View, m: &(impl Bodies + ?Sized), damage: &[f64], broken: &[(u32, u32)], projectile: Range<usize>) -> Drawn {
     root.fill(&WHITE)?;
-    let (pos, el) = (&m.state.pos, &m.el);
     let s = view.px_per_m;
-    for e in 0..el.len() {
+    for e in 0..m.element_count() {
+        let Some((c, r)) = disc(view, m, e) else { continue };
         let colour = if projectile.contains(&e) {
             STEEL
-        } else if el.is_fully_prescribed(e) {
+        } else if m.held(e) {
             SUPPORT
         } else {
             damage_colour(damage[e])
         };
-        let r = (el.radius[e] * s).max(0.75);
-        root.draw(&Circle::new(view.px([pos[e][0], pos[e][1]]), r, colour.filled()))?;
+        root.draw(&Circle::new(view.px(c), (r * s).max(0.75), colour.filled()))?;
     }
     for &(i, j) in broken {
-        let (a, b) = (pos[i as usize], pos[j as usize]);
-        let (ri, rj) = (el.radius[i as usize], el.radius[j as usize]);
+        let (Some((a, ri)), Some((b, rj))) = (disc(view, m, i as usize), disc(view, m, j as usize)) else { continue };
         let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
         let d = dx.hypot(dy).max(1e-12);
         // The crack sits on the gap between the two disks, across the line of centres.
@@ -108,10 +125,11 @@ fn draw(root: &Area<'_>, view: &View, m: &Model, damage: &[f64], broken: &[(u32,
         root.draw(&PathElement::new(vec![view.px([c[0] - nx, c[1] - ny]), view.px([c[0] + nx, c[1] + ny])], BLACK.stroke_width(1)))?;
     }
     let title = format!(
-        "t = {:.3} ms    v0 = {:.0} ft/s    bonds broken: {}    (grey intact → red all bonds broken; black: cracks; blue: projectile)",
+        "t = {:.3} ms    v0 = {:.0} ft/s    bonds broken: {}{}    (grey intact → red all bonds broken; black: cracks; blue: projectile)",
         m.time_s() * 1e3,
         view.v0_fps,
-        m.state.ledger.bonds_broken()
+        broken.len(),
+        if view.section_z_m.is_some() { "    section through the impact point" } else { "" }
     );
     root.draw(&Text::new(title, (12, 9), ("sans-serif", 18).into_font().color(&BLACK)))?;
     // Scale bar, bottom left.

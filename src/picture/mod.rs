@@ -7,8 +7,9 @@
 //! blue. The view is fixed by the scene (so frames line up), with a 12 in scale bar.
 //!
 //! Every file is written whole (temporary file and rename), the index after each frame, so an
-//! interrupted run leaves a readable series of the frames it reached. A 3D run writes the VTK
-//! series alone ([`vtk::Series`]).
+//! interrupted run leaves a readable series of the frames it reached. A 3D kernel scene writes
+//! the VTK series alone ([`vtk::Series`]); a 3D penetration run's PNG frames show its section
+//! through the impact point.
 
 pub mod font;
 mod frame;
@@ -18,7 +19,6 @@ use std::path::{Path, PathBuf};
 
 use crate::penetration::scene::PenetrationScene;
 use crate::error::{Error, Result};
-use crate::kernel::Model;
 use crate::simulation::Bodies;
 use crate::table::write_atomic;
 
@@ -87,7 +87,7 @@ impl Series {
     }
 
     /// Draw the model (the first call must be at t = 0: it records the initial bonds).
-    pub fn frame(&mut self, m: &Model) -> Result<()> {
+    pub fn frame(&mut self, m: &(impl Bodies + ?Sized)) -> Result<()> {
         let Some(damage) = self.vtk.frame(m)? else {
             return Ok(());
         };
@@ -100,7 +100,7 @@ impl Series {
     }
 
     /// The last frame (if the run's end was not drawn yet), and `final.png`, a copy of it.
-    pub fn finish(&mut self, m: &Model) -> Result<PathBuf> {
+    pub fn finish(&mut self, m: &(impl Bodies + ?Sized)) -> Result<PathBuf> {
         self.frame(m)?;
         let last = self.dir.join(&self.frames.last().expect("one frame at least").1);
         let bytes = std::fs::read(&last).map_err(|e| Error::io(&last, e))?;

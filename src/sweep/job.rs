@@ -75,8 +75,7 @@ pub type Row = Vec<(String, String)>;
 pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Row> {
     match load_text(&base.text, &base.path, &job.overrides)? {
         SceneFile::Penetration(scene) => {
-            let hooks = crate::penetration::Hooks { threading: Threading::Serial, lend, ..Default::default() };
-            let row = crate::penetration::run(&scene, hooks)?.row;
+            let row = crate::penetration::row(&scene, Threading::Serial, lend)?;
             let cells = crate::table::row::cells(&row).map_err(|e| Error::input("<row>", e))?;
             Ok(cells.into_iter().map(|(k, v)| (k, v.text())).collect())
         }

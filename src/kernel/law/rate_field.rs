@@ -54,6 +54,13 @@ pub struct RateField<const D: usize> {
     sums: Vec<([f64; D], f64)>,
     /// Per member: its cell and weights, as the transfer to the grid found them.
     cells: Vec<Option<(usize, [f64; 8])>>,
+    /// The nodes the last transfer touched, each once: only they are cleared and normalised
+    /// (a 3D grid has millions of nodes, the elements touch a few hundred thousand).
+    touched: Vec<u32>,
+    /// Per node: the transfer that last touched it (`epoch`).
+    mark: Vec<u32>,
+    /// The transfer's number.
+    epoch: u32,
     /// Per element: its smoothed velocity, m/s (its own for elements outside the grid; 0 for
     /// elements not smoothed, whose bonds carry no averaged rate); empty when no element is
     /// smoothed.
@@ -85,11 +92,14 @@ impl<const D: usize> RateField<D> {
                 hi[a] = hi[a].max(p[a]);
             }
         }
-        let side = (0..D).map(|a| hi[a] - lo[a]).fold(f64::NEG_INFINITY, f64::max);
-        let margin = 0.5 * side + 2.0 * h;
-        let origin_m: [f64; D] = std::array::from_fn(|a| lo[a] - margin);
+        // In 2D the largest side's half on every axis (a beam bends far below its depth); in 3D
+        // each axis its own side's half (a slab's lateral sides would make the grid eight
+        // times its volume for nothing).
+        let largest = (0..D).map(|a| hi[a] - lo[a]).fold(f64::NEG_INFINITY, f64::max);
+        let margin: [f64; D] = std::array::from_fn(|a| 0.5 * if D == 2 { largest } else { hi[a] - lo[a] } + 2.0 * h);
+        let origin_m: [f64; D] = std::array::from_fn(|a| lo[a] - margin[a]);
         let empty = members.is_empty();
-        let nodes: [usize; D] = std::array::from_fn(|a| if empty { 0 } else { ((hi[a] + margin - origin_m[a]) / h).ceil() as usize + 1 });
+        let nodes: [usize; D] = std::array::from_fn(|a| if empty { 0 } else { ((hi[a] + margin[a] - origin_m[a]) / h).ceil() as usize + 1 });
         let mut strides = [1usize; D];
         for a in 1..D {
             strides[a] = strides[a - 1] * nodes[a - 1];
@@ -99,6 +109,9 @@ impl<const D: usize> RateField<D> {
             spacing_m: h,
             inv_spacing: 1.0 / h,
             cells: Vec::new(),
+            touched: Vec::new(),
+            mark: vec![0; if empty { 0 } else { count }],
+            epoch: 0,
             origin_m,
             nodes,
             strides,
@@ -144,7 +157,16 @@ impl<const D: usize> RateField<D> {
         if self.members.is_empty() {
             return;
         }
-        self.sums.iter_mut().for_each(|s| *s = ([0.0; D], 0.0));
+        for &node in &self.touched {
+            self.sums[node as usize] = ([0.0; D], 0.0);
+        }
+        self.touched.clear();
+        // A new mark; on wrapping, every old mark is cleared so none can match.
+        self.epoch = self.epoch.wrapping_add(1);
+        if self.epoch == 0 {
+            self.mark.iter_mut().for_each(|m| *m = 0);
+            self.epoch = 1;
+        }
         self.cells.clear();
         for &e in &self.members {
             let e = e as usize;
@@ -153,6 +175,10 @@ impl<const D: usize> RateField<D> {
                 let (m, v) = (mass[e], vel[e]);
                 for (corner, &wn) in w.iter().enumerate().take(Self::CORNERS) {
                     let node = self.corner(k, corner);
+                    if self.mark[node] != self.epoch {
+                        self.mark[node] = self.epoch;
+                        self.touched.push(node as u32);
+                    }
                     let s = &mut self.sums[node];
                     let wm = wn * m;
                     for a in 0..D {
@@ -164,7 +190,8 @@ impl<const D: usize> RateField<D> {
             self.cells.push(c);
         }
         // Node momenta become node velocities once, not once per element that reads them.
-        for s in &mut self.sums {
+        for &node in &self.touched {
+            let s = &mut self.sums[node as usize];
             if s.1 > 0.0 {
                 let inv = 1.0 / s.1;
                 s.0.iter_mut().for_each(|x| *x *= inv);
