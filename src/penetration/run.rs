@@ -74,8 +74,8 @@ pub fn run(scene: &PenetrationScene, hooks: Hooks<'_, Model>) -> Result<Finished
 
 /// Run a 3D scene (`penetration.dim = 3`) to its settled outcome on the 3D kernel.
 pub fn run3(scene: &PenetrationScene, hooks: Hooks<'_, crate::kernel3d::Model>) -> Result<Finished<crate::kernel3d::Model>> {
-    let (kernel, layout) = scene.to_scene3()?;
-    run_on(scene, kernel.build()?, layout, hooks)
+    let (built, layout) = scene.build3()?;
+    run_on(scene, built, layout, hooks)
 }
 
 /// The row of a run of the scene on the kernel of its dimension, on `threading`, borrowing

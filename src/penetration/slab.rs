@@ -182,6 +182,18 @@ impl PenetrationScene {
 
     /// The 3D kernel's scene, and where its pieces are.
     pub fn to_scene3(&self) -> Result<(Scene3, Layout)> {
+        self.to_scene3_packed().map(|(scene, layout, _)| (scene, layout))
+    }
+
+    /// The 3D kernel's model, and where its pieces are (the slab packed once: placing the
+    /// projectile needs its front face).
+    pub fn build3(&self) -> Result<(crate::simulation::Built<crate::kernel3d::Model>, Layout)> {
+        let (scene, layout, target) = self.to_scene3_packed()?;
+        Ok((scene.build_with(vec![Some(target)])?, layout))
+    }
+
+    /// [`PenetrationScene::to_scene3`] and the slab's packing it made.
+    fn to_scene3_packed(&self) -> Result<(Scene3, Layout, crate::packing3d::Packing)> {
         self.validate()?;
         let (t, p, c, s) = (&self.target, &self.projectile, &self.concrete, self.slab());
         let (side, depth) = (in_to_m(t.length_in), in_to_m(t.depth_in));
@@ -333,7 +345,7 @@ impl PenetrationScene {
             thickness_m: f64::NAN,
             concrete_radius_m: rc,
         };
-        Ok((scene, layout))
+        Ok((scene, layout, target))
     }
 
     /// The projectile's length in a 3D scene, in (given, or from its weight).

@@ -43,6 +43,14 @@ impl Scene3 {
 
     /// Build the model and its probes.
     pub fn build(&self) -> Result<Built<Model>> {
+        self.build_with(Vec::new())
+    }
+
+    /// [`Scene3::build`], taking body k's packing from `packed[k]` where a caller already made
+    /// it (it must be the one the body's fields make: the penetration slab places its
+    /// projectile on the packing's front face, and the slab's packing is its costliest part).
+    pub fn build_with(&self, mut packed: Vec<Option<Packing>>) -> Result<Built<Model>> {
+        packed.resize_with(self.body.len(), || None);
         let kinds = self.body.len();
         // The fastest speed in the scene sets the rate part's default cap.
         let speed = |v: &[f64; 3]| (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
@@ -54,10 +62,13 @@ impl Scene3 {
                 Error::Input { file, field, message } => Error::Input { file, field: format!("body[{k}].{field}"), message },
                 other => other,
             };
-            let p = match (b.packing, &b.region, &b.shape) {
-                (Packing3::RandomDense, Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
-                (Packing3::RandomDense, None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
-                (_, None, None) => unreachable!("validated: a box or a shape"),
+            let p = match packed[k].take() {
+                Some(p) => Ok(p),
+                None => match (b.packing, &b.region, &b.shape) {
+                    (Packing3::RandomDense, Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                    (Packing3::RandomDense, None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
+                    (_, None, None) => unreachable!("validated: a box or a shape"),
+                },
             }
             .map_err(at)?;
             let material = self.solid(k);
