@@ -185,15 +185,16 @@ impl PenetrationScene {
         self.to_scene3_packed().map(|(scene, layout, _)| (scene, layout))
     }
 
-    /// The 3D kernel's model, and where its pieces are (the slab packed once: placing the
-    /// projectile needs its front face).
+    /// The 3D kernel's model, and where its pieces are (each body packed once: placing the
+    /// projectile needs the slab's front face, checking the start its own packing).
     pub fn build3(&self) -> Result<(crate::simulation::Built<crate::kernel3d::Model>, Layout)> {
-        let (scene, layout, target) = self.to_scene3_packed()?;
-        Ok((scene.build_with(vec![Some(target)])?, layout))
+        let (scene, layout, [target, projectile]) = self.to_scene3_packed()?;
+        Ok((scene.build_with(vec![Some(target), Some(projectile)])?, layout))
     }
 
-    /// [`PenetrationScene::to_scene3`] and the slab's packing it made.
-    fn to_scene3_packed(&self) -> Result<(Scene3, Layout, crate::packing3d::Packing)> {
+    /// [`PenetrationScene::to_scene3`] and the packings it made of its bodies (target,
+    /// projectile), the ones the scene's fields make.
+    fn to_scene3_packed(&self) -> Result<(Scene3, Layout, [crate::packing3d::Packing; 2])> {
         self.validate()?;
         let (t, p, c, s) = (&self.target, &self.projectile, &self.concrete, self.slab());
         let (side, depth) = (in_to_m(t.length_in), in_to_m(t.depth_in));
@@ -345,7 +346,7 @@ impl PenetrationScene {
             thickness_m: f64::NAN,
             concrete_radius_m: rc,
         };
-        Ok((scene, layout, target))
+        Ok((scene, layout, [target, placed]))
     }
 
     /// The projectile's length in a 3D scene, in (given, or from its weight).
