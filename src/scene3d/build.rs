@@ -65,7 +65,10 @@ impl Scene3 {
             let p = match packed[k].take() {
                 Some(p) => Ok(p),
                 None => match (b.packing, &b.region, &b.shape) {
-                    (Packing3::RandomDense, Some(r), _) => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                    (Packing3::RandomDense, Some(r), _) => match &b.grading {
+                        Some(g) => packing3d::random_dense_graded(r, g, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                        None => packing3d::random_dense(r, b.element_radius_m, b.seed, b.bond_gap_ratio),
+                    },
                     (Packing3::RandomDense, None, Some(s)) => s.packing(b.element_radius_m, b.seed, b.bond_gap_ratio),
                     (_, None, None) => unreachable!("validated: a box or a shape"),
                 },

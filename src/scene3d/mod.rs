@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
 use crate::kernel3d::solid::Solid;
-use crate::packing3d::Box3;
+use crate::packing3d::{Box3, Grading};
 use crate::scene::{OutputSpec, parse};
 use crate::shape3d::Projectile3;
 
@@ -138,6 +138,10 @@ pub struct Body3 {
     /// A projectile's solid the packing fills (or give a `box`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub shape: Option<Projectile3>,
+    /// Sphere sizes graded about an axis (`packing3d::random_dense_graded`), its finest radius
+    /// `element_radius_m`; absent: R everywhere.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub grading: Option<Grading>,
     /// Initial velocity, m/s.
     #[serde(default)]
     pub velocity_mps: [f64; 3],
@@ -239,6 +243,12 @@ impl Scene3 {
             }
             if !b.velocity_mps.iter().all(|v| v.is_finite()) {
                 return Err(Error::input(format!("{f}.velocity_mps"), format!("must be finite, got {:?}", b.velocity_mps)));
+            }
+            if let Some(g) = &b.grading {
+                g.validate(&format!("{f}.grading"), b.element_radius_m)?;
+                if b.region.is_none() {
+                    return Err(Error::input(format!("{f}.grading"), "a graded packing fills a box, not a shape"));
+                }
             }
             match (&b.region, &b.shape) {
                 (Some(r), None) => r.validate(&format!("{f}.box"))?,

@@ -11,6 +11,9 @@ use crate::error::{Error, Result};
 use crate::lattice::SplitMix64;
 use std::f64::consts::PI;
 
+mod graded;
+pub use graded::{Grading, random_dense_graded};
+
 /// An axis-aligned box, m.
 #[derive(Debug, Clone, Copy, PartialEq, serde::Deserialize, serde::Serialize)]
 #[serde(deny_unknown_fields)]
@@ -311,10 +314,19 @@ pub fn random_dense_in(walls: &dyn Walls, radius_m: f64, seed: u64, bond_gap_rat
             }
         }
     }
-    inflate(&mut Relax::new(walls, radius_m), &mut centres, &radii, s0);
+    let (centres, radii) = grow_apart(walls, centres, radii, radius_m, (1.0 + RADIUS_SPREAD) * radius_m, s0);
+    let (centres, radii) = layer_order(centres, radii, lo, 2.0 * radius_m);
+    let bonds = bonds_within(&centres, &radii, bond_gap_ratio * radius_m);
+    Ok(Packing { centres_m: centres, radii_m: radii, bonds, volume_m3: walls.volume_m3() })
+}
+
+/// Steps 3–4 of [`random_dense`]: spheres started at `s0` × their `radii` grown to full size
+/// apart within the walls, those the soft walls left outside dropped; `radius_m` (m) is the
+/// unit of the tolerances, `r_max_m` (m) the largest radius.
+fn grow_apart(walls: &dyn Walls, mut centres: Vec<[f64; 3]>, mut radii: Vec<f64>, radius_m: f64, r_max_m: f64, s0: f64) -> (Vec<[f64; 3]>, Vec<f64>) {
+    inflate(&mut Relax::new(walls, radius_m, r_max_m), &mut centres, &radii, s0);
     // The relaxation's walls are soft; a no-op after the last step converged, which leaves
     // every sphere strictly inside.
-    let mut radii = radii;
     let keep: Vec<bool> = centres.iter_mut().zip(&radii).map(|(c, &ri)| walls.settle(c, ri)).collect();
     if keep.iter().any(|&k| !k) {
         let mut k = keep.iter();
@@ -322,10 +334,8 @@ pub fn random_dense_in(walls: &dyn Walls, radius_m: f64, seed: u64, bond_gap_rat
         let mut k = keep.iter();
         radii.retain(|_| *k.next().expect("one flag per sphere"));
     }
-    remove_residual(&mut centres, &mut radii, radius_m);
-    let (centres, radii) = layer_order(centres, radii, lo, 2.0 * radius_m);
-    let bonds = bonds_within(&centres, &radii, bond_gap_ratio * radius_m);
-    Ok(Packing { centres_m: centres, radii_m: radii, bonds, volume_m3: walls.volume_m3() })
+    remove_residual(&mut centres, &mut radii, radius_m, r_max_m);
+    (centres, radii)
 }
 
 /// Radii uniform in [(1 − s)R, (1 + s)R] while their spheres' volume stays within
@@ -371,9 +381,9 @@ fn inflate(relax: &mut Relax<'_>, centres: &mut [[f64; 3]], radii: &[f64], s0: f
 
 /// Scale the radii down by the one factor that leaves no pair overlapping by more than
 /// [`MAX_OVERLAP_RATIO`] × R (a no-op after a relaxation that converged).
-fn remove_residual(centres: &mut [[f64; 3]], radii: &mut [f64], radius_m: f64) {
+fn remove_residual(centres: &mut [[f64; 3]], radii: &mut [f64], radius_m: f64, r_max_m: f64) {
     let mut pairs = Vec::new();
-    Grid::new(centres, 2.0 * (1.0 + RADIUS_SPREAD) * radius_m).pairs(centres, |i, j| radii[i] + radii[j], &mut pairs);
+    Grid::new(centres, 2.0 * r_max_m).pairs(centres, |i, j| radii[i] + radii[j], &mut pairs);
     let allowed = MAX_OVERLAP_RATIO * radius_m;
     let mut factor = 1.0f64;
     for &(i, j) in &pairs {
@@ -419,11 +429,11 @@ const FIRE_N_MIN: usize = 5;
 const FIRE_ALPHA: f64 = 0.1;
 
 impl<'a> Relax<'a> {
-    fn new(walls: &'a dyn Walls, radius_m: f64) -> Self {
+    fn new(walls: &'a dyn Walls, radius_m: f64, r_max_m: f64) -> Self {
         Relax {
             walls,
             skin_m: 0.5 * radius_m,
-            r_max_m: (1.0 + RADIUS_SPREAD) * radius_m,
+            r_max_m,
             radius_m,
             pairs: Vec::new(),
             force: Vec::new(),
@@ -533,9 +543,14 @@ fn layer_order(centres: Vec<[f64; 3]>, radii: Vec<f64>, lo: [f64; 3], slab_m: f6
 
 /// The pairs (i < j, sorted) whose gap is below `gap_m`.
 fn bonds_within(centres: &[[f64; 3]], radii: &[f64], gap_m: f64) -> Vec<(u32, u32)> {
+    bonds_within_by(centres, radii, gap_m, |_, _| gap_m)
+}
+
+/// The pairs (i < j, sorted) whose gap is below `gap_m(i, j)`, at most `gap_max_m` (m).
+fn bonds_within_by(centres: &[[f64; 3]], radii: &[f64], gap_max_m: f64, gap_m: impl Fn(usize, usize) -> f64) -> Vec<(u32, u32)> {
     let r_max = radii.iter().copied().fold(0.0, f64::max);
     let mut out = Vec::new();
-    Grid::new(centres, 2.0 * r_max + gap_m).pairs(centres, |i, j| radii[i] + radii[j] + gap_m, &mut out);
+    Grid::new(centres, 2.0 * r_max + gap_max_m).pairs(centres, |i, j| radii[i] + radii[j] + gap_m(i, j), &mut out);
     out.sort_unstable();
     out
 }
