@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 case "${1:-2d}" in
     2d) stem=penetration; ci_note="(R = 0.5 in, about 3 300 elements)" ;;
-    3d) stem=penetration3d; ci_note="(concrete spheres of R = 2 in, about 1 700 of them)" ;;
+    3d) stem=penetration3d; ci_note="(concrete spheres of R = 1 in near the impact, 4 in away from it)" ;;
     *) echo "usage: scripts/calibrate.sh [2d|3d]" >&2; exit 2 ;;
 esac
 . scripts/demsweep_bin.sh

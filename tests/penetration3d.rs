@@ -2,7 +2,9 @@
 //! its weight makes, the slab and its supports are where the fields say, the runs end in an
 //! outcome at the edges of the scene's range (3000 ft/s, 30° obliquity, a slab two spheres
 //! thick, a projectile released touching the face), bit for bit on one and two threads, and
-//! every bad field is refused by name. Each run is cheap: level 0 (R = 2 in) on a narrow slab.
+//! every bad field is refused by name; a graded slab is fine under the impact and coarse at its
+//! edges. Each run is cheap: level 0 (spheres of 1 in under the impact, 4 in away from it, or
+//! a uniform 2 in) on a narrow slab.
 
 use demsweep::penetration::scene::PenetrationScene;
 use demsweep::penetration::slab::{Edges, Slab};
@@ -19,6 +21,12 @@ fn scene(side_in: f64, depth_in: f64, v0_fps: f64) -> PenetrationScene {
     s.target.depth_in = depth_in;
     s.projectile.v0_fps = v0_fps;
     s.concrete.strength_factor = 2.0;
+    s
+}
+
+/// `s` with a uniform slab of 2 in spheres at level 0 (1 in at level 1).
+fn uniform(mut s: PenetrationScene) -> PenetrationScene {
+    s.slab = Some(Slab { element_radius_in: 1.0, max_element_radius_in: 1.0, ..Slab::default() });
     s
 }
 
@@ -69,7 +77,7 @@ fn the_projectile_is_the_steel_cylinder_its_weight_makes() {
 fn clamped_edges_hold_the_side_bands_and_simple_supports_the_back_edges_only() {
     let count = |edges: Edges| {
         let mut s = scene(40.0, 30.0, 500.0);
-        s.slab = Some(Slab { edges, ..Slab::default() });
+        s.slab = Some(Slab { edges, element_radius_in: 1.0, max_element_radius_in: 1.0, ..Slab::default() });
         let built = s.to_scene3().unwrap().0.build().unwrap();
         let m = built.model;
         let t = m.body("target").unwrap();
@@ -121,7 +129,7 @@ fn a_30_degree_oblique_impact_runs_to_a_settled_outcome_with_the_ledger_closed()
 #[test]
 fn a_slab_two_spheres_thick_is_perforated_at_1000_fps() {
     // Two mean diameters of R = 2 in: 8 in.
-    let f = run3(&scene(40.0, 8.0, 1000.0), Hooks::default()).unwrap();
+    let f = run3(&uniform(scene(40.0, 8.0, 1000.0)), Hooks::default()).unwrap();
     let (o, r) = (&f.row.outcome, &f.row.run);
     assert!(finite(&f));
     assert!(o.perforated && o.scabbed, "{o:?}");
@@ -167,6 +175,9 @@ fn bad_fields_are_refused_by_name() {
     refused(&|s| s.slab = Some(Slab { element_radius_in: 0.0, ..Slab::default() }), "slab.element_radius_in");
     refused(&|s| s.slab = Some(Slab { projectile_element_radius_in: Some(3.0), ..Slab::default() }), "slab.projectile_element_radius_in");
     refused(&|s| s.slab = Some(Slab { steel_density_lbs2_per_in4: -1.0, ..Slab::default() }), "slab.steel_density_lbs2_per_in4");
+    refused(&|s| s.slab = Some(Slab { max_element_radius_in: 0.4, ..Slab::default() }), "slab.max_element_radius_in");
+    refused(&|s| s.slab = Some(Slab { fine_radius_in: -1.0, ..Slab::default() }), "slab.fine_radius_in");
+    refused(&|s| s.slab = Some(Slab { radius_growth: f64::NAN, ..Slab::default() }), "slab.radius_growth");
     refused(&|s| s.projectile.weight_lb = 0.5, "projectile.weight_lb");
     refused(&|s| s.target.depth_in = 6.0, "target.depth_in");
     refused(&|s| s.target.length_in = 10.0, "target.length_in");
@@ -192,4 +203,34 @@ fn the_default_projectile_is_made_of_enough_spheres_at_every_level() {
         eprintln!("level {level}: {n} projectile spheres of {} in", s.projectile_radius3_in());
         assert!(n >= 8, "level {level}: {n}");
     }
+}
+
+#[test]
+fn the_graded_slab_is_fine_under_the_impact_and_coarse_away_from_it() {
+    // Level 0 of the defaults: 1 in spheres within 7 in of the impact axis, growing by 0.2 in
+    // per inch to 4 in.
+    let s = scene(60.0, 30.0, 500.0);
+    let built = s.to_scene3().unwrap().0.build().unwrap();
+    let m = built.model;
+    let (x0, z0) = (30.0, 30.0);
+    let (mut core, mut far) = (Vec::new(), Vec::new());
+    for e in m.body("target").unwrap() {
+        let x = m.initial_m(e).map(|v| v / M_PER_IN);
+        let off = (x[0] - x0).hypot(x[2] - z0);
+        let r = m.radius_m(e) / M_PER_IN;
+        if off < 5.0 {
+            core.push(r);
+        } else if off > 28.0 {
+            far.push(r);
+        }
+    }
+    let mean = |v: &[f64]| v.iter().sum::<f64>() / v.len() as f64;
+    // Radii uniform in ±20 % of the field's: means within a few per cent of 1 in and 4 in.
+    assert!(core.len() > 100 && (mean(&core) - 1.0).abs() < 0.05, "core: {} spheres of mean {} in", core.len(), mean(&core));
+    assert!(far.len() > 10 && (mean(&far) - 4.0).abs() < 0.25, "edges: {} spheres of mean {} in", far.len(), mean(&far));
+    assert!(core.iter().all(|&r| (0.79..=1.21).contains(&r)), "core radii {:?}", core.iter().fold((f64::MAX, 0.0f64), |a, &r| (a.0.min(r), a.1.max(r))));
+    // The target weighs its concrete: 60 × 60 × 30 in³ at the default density.
+    let mass: f64 = m.body("target").unwrap().map(|e| m.mass_kg(e)).sum();
+    let want = 60.0 * 60.0 * 30.0 * s.concrete.density_lbs2_per_in4 * 386.0886 * 0.45359237;
+    assert!((mass / want - 1.0).abs() < 1e-6, "target {mass} kg against {want} kg");
 }

@@ -13,9 +13,13 @@
 //!   `slab.steel_density_lbs2_per_in4`, so its length follows from the weight unless
 //!   `projectile.length_in` is given (then the density follows: nothing to map, `[mapping]`
 //!   is refused);
-//! * elements: both bodies random dense packings of spheres, the concrete's mean radius
-//!   `slab.element_radius_in` at level 1, the projectile's `slab.projectile_element_radius_in`,
-//!   both halved per level;
+//! * elements: both bodies random dense packings of spheres; the concrete's graded about the
+//!   projectile's path (`packing3d::random_dense_graded`): mean radius
+//!   `slab.element_radius_in` within `slab.fine_radius_in` of it, growing by
+//!   `slab.radius_growth` per unit distance up to `slab.max_element_radius_in` (a 2 in sphere
+//!   cannot resolve the crushing under a 3.5 in nose, and spheres that fine everywhere would
+//!   be a hundred thousand); the projectile's `slab.projectile_element_radius_in`; every
+//!   radius (and the growth) halved per level;
 //! * masses are the bodies' own (no slice).
 //!
 //! Compaction's default full strain (`concrete.compaction.full_strain`, the Holmquist–Johnson–
@@ -28,7 +32,7 @@ use super::scene::{Layout, PenetrationScene};
 use crate::error::{Error, Result};
 use crate::kernel3d::solid::Solid;
 use crate::material::{CompactionSpec, FailureCriterion, RateSpec};
-use crate::packing3d::Box3;
+use crate::packing3d::{Box3, Grading};
 use crate::scene::OutputSpec;
 use crate::scene3d::{Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
 use crate::shape3d::Projectile3;
@@ -53,9 +57,23 @@ pub struct Slab {
     /// How the side faces are held.
     #[serde(default)]
     pub edges: Edges,
-    /// The concrete's mean sphere radius at level 1, in (halved per level).
+    /// The concrete's mean sphere radius at level 1 near the impact axis, in (the finest;
+    /// halved per level).
     #[serde(default = "default_radius")]
     pub element_radius_in: f64,
+    /// The concrete's largest mean sphere radius at level 1, in (halved per level): the slab
+    /// is graded from `element_radius_in` within `fine_radius_in` of the impact axis, growing by
+    /// `radius_growth` per unit distance, up to this. Equal to `element_radius_in`: uniform.
+    #[serde(default = "default_max_radius")]
+    pub max_element_radius_in: f64,
+    /// Distance from the impact axis within which the concrete has its finest spheres, in (the
+    /// same at every level: the region the nose crushes and the plug forms in).
+    #[serde(default = "default_fine_radius")]
+    pub fine_radius_in: f64,
+    /// Growth of the mean sphere radius per unit distance beyond `fine_radius_in` at level 1,
+    /// in/in (halved per level with the radii, so every level grades over the same region).
+    #[serde(default = "default_growth")]
+    pub radius_growth: f64,
     /// The projectile's mean sphere radius at level 1, in (halved per level). Default: at each
     /// level the concrete's, but at most a fifth of the calibre (eight spheres at least). A discretisation choice, not
     /// physics: steel's springs are stiffer than concrete's by E/ρ, so at half the concrete's
@@ -71,10 +89,23 @@ pub struct Slab {
     pub projectile_seed: u64,
 }
 
-/// One inch at level 1: a 30 in slab 30 spheres across its thickness (15 at level 0, 60 at
-/// level 2), about 36 000 spheres in a 96 in square slab, an event within a minute on a core.
+/// Half an inch at level 1: 3.5 spheres across the calibre (1.75 at level 0, 7 at level 2)
+/// under the impact, where the 1 in spheres of a uniform slab resisted as jammed grains
+/// (docs/penetration3d.md).
 fn default_radius() -> f64 {
-    1.0
+    0.5
+}
+/// Two inches at level 1 away from the impact: 7.5 spheres across the 30 in slab.
+fn default_max_radius() -> f64 {
+    2.0
+}
+/// Two calibres of the source's 3.5 in projectile.
+fn default_fine_radius() -> f64 {
+    7.0
+}
+/// The radius doubles over 5 in at level 1 (neighbours differ by about 10 %).
+fn default_growth() -> f64 {
+    0.1
 }
 fn default_steel_density() -> f64 {
     7.33e-4
@@ -89,6 +120,9 @@ impl Default for Slab {
         Slab {
             edges: Edges::default(),
             element_radius_in: default_radius(),
+            max_element_radius_in: default_max_radius(),
+            fine_radius_in: default_fine_radius(),
+            radius_growth: default_growth(),
             projectile_element_radius_in: None,
             steel_density_lbs2_per_in4: default_steel_density(),
             projectile_seed: default_projectile_seed(),
@@ -128,6 +162,7 @@ impl PenetrationScene {
         let s = self.slab();
         for (f, v) in [
             ("slab.element_radius_in", s.element_radius_in),
+            ("slab.max_element_radius_in", s.max_element_radius_in),
             ("slab.projectile_element_radius_in", s.projectile_element_radius_in.unwrap_or(1.0)),
             ("slab.steel_density_lbs2_per_in4", s.steel_density_lbs2_per_in4),
         ] {
@@ -135,11 +170,22 @@ impl PenetrationScene {
                 return Err(Error::input(f, format!("must be a finite number > 0, got {v}")));
             }
         }
+        for (f, v) in [("slab.fine_radius_in", s.fine_radius_in), ("slab.radius_growth", s.radius_growth)] {
+            if !(v.is_finite() && v >= 0.0) {
+                return Err(Error::input(f, format!("must be a finite number ≥ 0, got {v}")));
+            }
+        }
+        if s.max_element_radius_in < s.element_radius_in {
+            return Err(Error::input(
+                "slab.max_element_radius_in",
+                format!("{} in is below slab.element_radius_in, {} in (the finest)", s.max_element_radius_in, s.element_radius_in),
+            ));
+        }
         if self.mapping != super::scene::Mapping::default() {
             return Err(Error::input("mapping", "a 3D scene has no slice to map: the projectile is a cylinder of its own mass"));
         }
         let t = &self.target;
-        let rc = s.element_radius_in * self.level_scale();
+        let rc = s.max_element_radius_in * self.level_scale();
         if t.depth_in < 4.0 * rc {
             return Err(Error::input("target.depth_in", format!("{} in holds fewer than two spheres of radius {rc} in across the slab", t.depth_in)));
         }
@@ -236,11 +282,22 @@ impl PenetrationScene {
             rate: None,
             compaction: None,
         };
-        // The front face: the top of the target's top spheres (the packing is built again, bit
-        // for bit, by the scene).
-        let target = crate::packing3d::random_dense(&slab_box, rc, t.seed, BOND_GAP_RATIO)?;
-        let front = (0..target.centres_m.len()).map(|e| target.centres_m[e][1] + target.radii_m[e]).fold(f64::NEG_INFINITY, f64::max);
         let (x0, z0) = (in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)), 0.5 * side);
+        // Graded about the projectile's path from the impact point, coarse beyond.
+        let r_big = in_to_m(s.max_element_radius_in) * self.level_scale();
+        let grading = (s.max_element_radius_in > s.element_radius_in).then(|| Grading {
+            point_m: [x0, depth, z0],
+            axis,
+            core_m: in_to_m(s.fine_radius_in),
+            growth: s.radius_growth * self.level_scale(),
+            max_radius_m: r_big,
+        });
+        // The front face: the top of the target's top spheres.
+        let target = match &grading {
+            Some(g) => crate::packing3d::random_dense_graded(&slab_box, g, rc, t.seed, BOND_GAP_RATIO)?,
+            None => crate::packing3d::random_dense(&slab_box, rc, t.seed, BOND_GAP_RATIO)?,
+        };
+        let front = (0..target.centres_m.len()).map(|e| target.centres_m[e][1] + target.radii_m[e]).fold(f64::NEG_INFINITY, f64::max);
         // Tail so that the tip is at the impact point, then back along the axis until the
         // lowest sphere clears the face by the standoff (at an angle the first to arrive is a
         // corner of the nose, not the tip).
@@ -276,10 +333,10 @@ impl PenetrationScene {
         // The supports: the spheres reaching within `support_length_in` of a side face (centres
         // within it plus a mean radius), through the thickness when clamped, the layer touching
         // the back face when simply supported.
-        let (band, pad) = (in_to_m(t.support_length_in) + rc, 1e-9 + rc);
+        let (band, pad) = (in_to_m(t.support_length_in) + r_big, 1e-9 + r_big);
         let y_max_m = match s.edges {
             Edges::Clamped => depth + pad,
-            Edges::SimplySupported => 1.5 * rc,
+            Edges::SimplySupported => 1.5 * r_big,
         };
         let all = Box3 { x_min_m: -pad, x_max_m: side + pad, y_min_m: -pad, y_max_m, z_min_m: -pad, z_max_m: side + pad };
         let bands = [
@@ -308,6 +365,7 @@ impl PenetrationScene {
                     bond_gap_ratio: BOND_GAP_RATIO,
                     region: Some(slab_box),
                     shape: None,
+                    grading,
                     velocity_mps: [0.0; 3],
                 },
                 Body3 {
@@ -319,6 +377,7 @@ impl PenetrationScene {
                     bond_gap_ratio: BOND_GAP_RATIO,
                     region: None,
                     shape: Some(shape.clone()),
+                    grading: None,
                     velocity_mps: axis.map(|k| v * k),
                 },
             ],
