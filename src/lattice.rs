@@ -87,6 +87,11 @@ fn check_fits(rect: &Rect, radius_m: f64) -> Result<()> {
     if rect.x_max_m - rect.x_min_m < 2.0 * radius_m || rect.y_max_m - rect.y_min_m < 2.0 * radius_m {
         return Err(Error::input("element_radius_m", format!("{radius_m} m is too large for the rectangle {rect:?}")));
     }
+    // Close-packed is the densest: 2√3 R² per disk.
+    let n = rect.area_m2() / (2.0 * 3f64.sqrt() * radius_m * radius_m);
+    if !(n <= crate::packing3d::MAX_SPHERES as f64) {
+        return Err(Error::input("element_radius_m", format!("{radius_m} m in {rect:?} would make about {n:.3e} elements, more than {}", crate::packing3d::MAX_SPHERES)));
+    }
     Ok(())
 }
 

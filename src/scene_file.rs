@@ -32,6 +32,8 @@ pub fn load_text(text: &str, origin: &Path, overrides: &[Override]) -> Result<Sc
     let blame = |e: Error| match e {
         Error::Input { file, field, message } => {
             let set = overrides.iter().find(|o| field.starts_with(&o.field) || o.field.starts_with(&field));
+            // Lines of the rewritten text are not the file's.
+            let message = if overrides.is_empty() { message } else { crate::scene::without_location(&message).to_string() };
             let message = match set {
                 Some(o) => format!("{message} (given by --set {}={})", o.field, o.value),
                 None => message,

@@ -656,7 +656,8 @@ impl PenetrationScene {
             return Err(Error::input("outcome.check_every_steps", "must be ≥ 1"));
         }
         if g.dim == 3 {
-            return self.validate_slab();
+            self.validate_slab()?;
+            return self.check_size();
         }
         if self.mapping.rule == MappingRule::SeedEffectiveDensity && p.weight_lb != seed::PROJECTILE_WEIGHT_LB {
             return Err(Error::input(
@@ -675,7 +676,49 @@ impl PenetrationScene {
         } else if self.mapping.thickness_in.is_some() {
             return Err(Error::input("mapping.thickness_in", "only rule = \"thickness\" takes a thickness"));
         }
+        self.check_size()?;
         self.outline()?.validate("projectile")?;
+        Ok(())
+    }
+
+    /// Upper estimates of the (target, projectile) element counts, each with what it counts:
+    /// 2D at the close-packed 2√3 R² per disk, 3D at a packing fraction of 0.64 of the finest
+    /// spheres.
+    pub fn element_estimates(&self) -> [(f64, String); 2] {
+        let (t, p) = (&self.target, &self.projectile);
+        let disks = |area_in2: f64, r_in: f64| area_in2 / (2.0 * 3f64.sqrt() * r_in * r_in);
+        let spheres = |volume_in3: f64, r_in: f64| 0.64 * volume_in3 / (4.0 / 3.0 * std::f64::consts::PI * r_in.powi(3));
+        let rc = self.concrete_radius_m() / M_PER_IN;
+        if self.penetration.dim == 3 {
+            // The cylinder's volume: given by its length, or by its weight in steel.
+            let volume = match p.length_in {
+                Some(l) => std::f64::consts::FRAC_PI_4 * p.width_in * p.width_in * l,
+                None => lb_to_kg(p.weight_lb) / lbs2_per_in4_to_kg_per_m3(self.slab().steel_density_lbs2_per_in4) / M_PER_IN.powi(3),
+            };
+            let rp = self.projectile_radius3_in();
+            [
+                (spheres(t.length_in * t.length_in * t.depth_in, rc), format!("a {0} × {0} × {1} in slab of spheres of {2} in", short(t.length_in), short(t.depth_in), short(rc))),
+                (spheres(volume, rp), format!("a {} in³ projectile of spheres of {} in", short(volume), short(rp))),
+            ]
+        } else {
+            let (rp, lp) = (self.projectile_radius_m() / M_PER_IN, self.projectile_length_in());
+            [
+                (disks(t.length_in * t.depth_in, rc), format!("a {} × {} in target of disks of {} in", short(t.length_in), short(t.depth_in), short(rc))),
+                (disks(p.width_in * lp, rp), format!("a {} × {} in projectile of disks of {} in", short(p.width_in), short(lp), short(rp))),
+            ]
+        }
+    }
+
+    /// An error, naming the sizes, if either body would have more elements than a run can hold
+    /// ([`crate::packing3d::MAX_SPHERES`]): a typo (a span in miles, a radius in thousandths)
+    /// must not fill the memory, or take hours, before it is refused.
+    fn check_size(&self) -> Result<()> {
+        let max = crate::packing3d::MAX_SPHERES as f64;
+        for ((n, what), field) in self.element_estimates().into_iter().zip(["target", "projectile"]) {
+            if !(n <= max) {
+                return Err(Error::input(field, format!("{what} would make about {n:.2e} elements, more than {max:.0}")));
+            }
+        }
         Ok(())
     }
 
@@ -842,4 +885,9 @@ impl PenetrationScene {
         };
         Ok((scene, layout))
     }
+}
+
+/// A size as a person reads it: plain when moderate, in powers of ten when not.
+fn short(v: f64) -> String {
+    if v != 0.0 && !(1e-3..1e6).contains(&v.abs()) { format!("{v:.3e}") } else { format!("{:.4}", v).trim_end_matches('0').trim_end_matches('.').to_string() }
 }

@@ -292,7 +292,7 @@ impl Default for OutputSpec {
 /// The dotted key at byte `at` of a TOML text: the enclosing table header plus the key of
 /// the line (TOML errors carry a span, not a path).
 fn field_at(text: &str, at: usize) -> String {
-    let at = at.min(text.len());
+    let at = char_floor(text, at);
     let line_start = text[..at].rfind('\n').map_or(0, |k| k + 1);
     let line = text[line_start..].lines().next().unwrap_or("").trim();
     let key = line.split('=').next().unwrap_or("").trim().trim_start_matches('[').trim_end_matches(']').to_string();
@@ -316,12 +316,41 @@ pub fn parse<T: serde::de::DeserializeOwned>(text: &str, origin: &Path) -> Resul
     toml::from_str(text).map_err(|e| {
         let message = e.message().trim().to_string();
         let hint = overrides::unit_hint(&message).map(|h| format!("; {h}")).unwrap_or_default();
-        Error::Input {
-            file: Some(origin.to_path_buf()),
-            field: e.span().map(|s| field_at(text, s.start)).unwrap_or_else(|| "(syntax)".into()),
-            message: format!("{message}{hint}"),
-        }
+        let (field, at) = match e.span() {
+            Some(s) => {
+                let (line, column) = line_column(text, s.start);
+                (field_at(text, s.start), format!("line {line}, column {column}: "))
+            }
+            None => ("(syntax)".into(), String::new()),
+        };
+        Error::Input { file: Some(origin.to_path_buf()), field, message: format!("{at}{message}{hint}") }
     })
+}
+
+/// The largest char boundary of `text` at or before byte `at`.
+fn char_floor(text: &str, at: usize) -> usize {
+    let mut at = at.min(text.len());
+    while !text.is_char_boundary(at) {
+        at -= 1;
+    }
+    at
+}
+
+/// Line and column (both from 1, the column in characters) of byte `at` of `text`.
+fn line_column(text: &str, at: usize) -> (usize, usize) {
+    let before = &text[..char_floor(text, at)];
+    let line_start = before.rfind('\n').map_or(0, |k| k + 1);
+    (before.matches('\n').count() + 1, before[line_start..].chars().count() + 1)
+}
+
+/// `message` without the "line L, column C: " that [`parse`] puts first: for text the program
+/// wrote itself (a scene with `--set` applied), whose lines are not the file's.
+pub fn without_location(message: &str) -> &str {
+    let rest = message.strip_prefix("line ").and_then(|m| m.split_once(", column ")).and_then(|(l, m)| {
+        let (c, m) = m.split_once(": ")?;
+        (l.bytes().all(|b| b.is_ascii_digit()) && c.bytes().all(|b| b.is_ascii_digit())).then_some(m)
+    });
+    rest.unwrap_or(message)
 }
 
 impl Scene {
