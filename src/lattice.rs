@@ -80,6 +80,10 @@ fn rows(lo: f64, hi: f64, pitch: f64) -> usize {
     }
 }
 
+/// Most elements a lattice or packing may have: a typo must not fill the memory or take hours
+/// before it is refused (six times the largest level: 2D level 4 has 3.4 million disks).
+pub const MAX_ELEMENTS: usize = 20_000_000;
+
 fn check_fits(rect: &Rect, radius_m: f64) -> Result<()> {
     if !(radius_m.is_finite() && radius_m > 0.0) {
         return Err(Error::input("element_radius_m", format!("must be > 0, got {radius_m}")));
@@ -89,8 +93,8 @@ fn check_fits(rect: &Rect, radius_m: f64) -> Result<()> {
     }
     // Close-packed is the densest: 2√3 R² per disk.
     let n = rect.area_m2() / (2.0 * 3f64.sqrt() * radius_m * radius_m);
-    if !(n <= crate::packing3d::MAX_SPHERES as f64) {
-        return Err(Error::input("element_radius_m", format!("{radius_m} m in {rect:?} would make about {n:.3e} elements, more than {}", crate::packing3d::MAX_SPHERES)));
+    if !(n <= MAX_ELEMENTS as f64) {
+        return Err(Error::input("element_radius_m", format!("{radius_m} m in {rect:?} would make about {n:.3e} elements, more than {}", MAX_ELEMENTS)));
     }
     Ok(())
 }

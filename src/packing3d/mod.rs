@@ -199,9 +199,8 @@ pub const MAX_OVERLAP_RATIO: f64 = 1e-6;
 /// not needed.
 const FINAL_MARGIN: f64 = 1e-3;
 
-/// Most spheres (or disks) a packing may have: a typo must not fill the memory or take hours
-/// before it is refused (six times the largest level: 2D level 4 has 3.4 million disks).
-pub const MAX_SPHERES: usize = 20_000_000;
+/// Most spheres a packing may have ([`crate::lattice::MAX_ELEMENTS`], as for disks).
+pub use crate::lattice::MAX_ELEMENTS as MAX_SPHERES;
 
 /// Check `radius_m` is positive and that a sphere of `fit_radius_m` fits in the box.
 fn check_fits(b: &Box3, radius_m: f64, fit_radius_m: f64) -> Result<()> {

@@ -710,10 +710,10 @@ impl PenetrationScene {
     }
 
     /// An error, naming the sizes, if either body would have more elements than a run can hold
-    /// ([`crate::packing3d::MAX_SPHERES`]): a typo (a span in miles, a radius in thousandths)
+    /// ([`lattice::MAX_ELEMENTS`]): a typo (a span in miles, a radius in thousandths)
     /// must not fill the memory, or take hours, before it is refused.
     fn check_size(&self) -> Result<()> {
-        let max = crate::packing3d::MAX_SPHERES as f64;
+        let max = lattice::MAX_ELEMENTS as f64;
         for ((n, what), field) in self.element_estimates().into_iter().zip(["target", "projectile"]) {
             if !(n <= max) {
                 return Err(Error::input(field, format!("{what} would make about {n:.2e} elements, more than {max:.0}")));
