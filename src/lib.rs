@@ -27,6 +27,7 @@ pub mod material;
 pub mod penetration;
 pub mod picture;
 pub mod provenance;
+pub mod report;
 pub mod run;
 pub mod scene;
 pub mod scene3d;

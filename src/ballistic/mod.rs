@@ -18,6 +18,7 @@
 
 pub mod bracket;
 pub mod fit;
+pub mod pictures;
 pub mod plot;
 pub mod schedule;
 pub mod thresholds;

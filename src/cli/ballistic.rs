@@ -23,7 +23,8 @@ pub struct Args {
     /// The penetration scene.
     #[arg(long, default_value = "sweeps/penetration.toml")]
     pub scene: PathBuf,
-    /// Output folder: runs.csv, runs.parquet, thresholds.csv, ballistic.png, sweep.toml.
+    /// Output folder: runs.csv, runs.parquet, thresholds.csv, ballistic.png, sweep.toml,
+    /// pictures/, report.html.
     #[arg(long, default_value = "results/ballistic")]
     pub out: PathBuf,
     /// Threads, one run each (0: one per core).
@@ -44,6 +45,10 @@ pub struct Args {
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
+    /// Do not make again the first packing's first scabbing and first perforation runs to draw
+    /// them for the report (`<out>/pictures/`; two more runs).
+    #[arg(long)]
+    pub no_pictures: bool,
 }
 
 /// Arguments of `demsweep merge`.
@@ -130,6 +135,14 @@ pub fn run(args: Args) -> Result<()> {
     };
     let report = ballistic::run(&plan)?;
     print(&report, &args.out);
+    // A shard has no thresholds to picture; the merge of the shards is what a user reads.
+    if shard.is_none() && !args.no_pictures {
+        let runs = crate::table::Table::read_csv(&crate::sweep::store::Store::csv_path(&args.out))?;
+        for p in ballistic::pictures::draw(&args.scene, &runs, &args.out)? {
+            println!("picture: {}", p.display());
+        }
+    }
+    println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }
 
@@ -137,5 +150,6 @@ pub fn run(args: Args) -> Result<()> {
 pub fn merge(args: MergeArgs) -> Result<()> {
     let report = ballistic::merge(&args.dirs, &args.out, args.bisect, args.threads, args.quiet)?;
     print(&report, &args.out);
+    println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }

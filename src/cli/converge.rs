@@ -60,5 +60,6 @@ pub fn run(args: Args) -> Result<()> {
         _ => {}
     }
     println!("tables in {}", args.out.display());
+    println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }

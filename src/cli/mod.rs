@@ -7,6 +7,7 @@ pub mod bench;
 pub mod calibrate;
 pub mod converge;
 pub mod empirical;
+pub mod report;
 pub mod run;
 pub mod scene;
 pub mod sweep;
@@ -49,6 +50,8 @@ pub enum Command {
     /// Run a penetration scene and measure its top frequency as it goes: the step against the
     /// measured instability threshold.
     Timestep(timestep::Args),
+    /// Write an output folder's `report.html` again from its tables (the sweeps write it).
+    Report(report::Args),
 }
 
 /// Run the parsed command.
@@ -65,5 +68,6 @@ pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
         Command::Merge(args) => ballistic::merge(args),
         Command::Converge(args) => converge::run(args),
         Command::Timestep(args) => timestep::run(args),
+        Command::Report(args) => report::run(args),
     }
 }

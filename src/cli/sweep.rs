@@ -44,6 +44,7 @@ pub fn run(args: Args) -> Result<()> {
     let engine = Engine::new(&base, args.threads, args.quiet);
     let done = engine.run(&jobs, &mut store)?;
     eprintln!("{} runs made, {} found done; {} in {}", done.ran, done.skipped, store.len(), Store::csv_path(&args.out).display());
+    eprintln!("report: {}", crate::report::write(&args.out)?.display());
     done.check().map_err(|e| match e {
         Error::Input { message, .. } => Error::input("sweep", message),
         other => other,

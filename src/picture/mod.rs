@@ -110,6 +110,46 @@ impl Series {
     }
 }
 
+/// One picture of a penetration run: the first record at or after `at_s` (a sweep's first scab
+/// or first perforation, drawn again for its report), as `frame` would draw it.
+pub struct Moment {
+    path: PathBuf,
+    view: View,
+    at_s: f64,
+    damage: Option<Damage>,
+    projectile: std::ops::Range<usize>,
+    drawn_s: Option<f64>,
+}
+
+impl Moment {
+    /// A picture of `scene` at `at_s` into `path` (PNG).
+    pub fn new(path: &Path, scene: &PenetrationScene, at_s: f64) -> Result<Moment> {
+        Ok(Moment { path: path.to_path_buf(), view: View::of(scene)?, at_s, damage: None, projectile: 0..0, drawn_s: None })
+    }
+
+    /// Look at the model (the first call must be at t = 0: it records the initial bonds); draws
+    /// once, at the first look at or after the moment.
+    pub fn frame(&mut self, m: &(impl Bodies + ?Sized)) -> Result<()> {
+        if self.damage.is_none() {
+            self.damage = Some(Damage::new(m));
+            self.projectile = m.body("projectile").unwrap_or(0..0);
+        }
+        if self.drawn_s.is_some() || m.time_s() < self.at_s {
+            return Ok(());
+        }
+        let (d, broken) = self.damage.as_ref().expect("set above").now(m);
+        let bytes = render_png(&self.view, m, &d, &broken, self.projectile.clone()).map_err(|e| Error::io(&self.path, e))?;
+        write_atomic(&self.path, &bytes)?;
+        self.drawn_s = Some(m.time_s());
+        Ok(())
+    }
+
+    /// When it was drawn, s (None: the run ended first).
+    pub fn drawn_s(&self) -> Option<f64> {
+        self.drawn_s
+    }
+}
+
 /// An RGB buffer (8 bit, row-major) as PNG bytes.
 pub fn png_bytes(rgb: &[u8], w: u32, h: u32) -> std::result::Result<Vec<u8>, String> {
     let mut out = Vec::new();
