@@ -26,6 +26,8 @@ const READERS: &[&str] = &[
     "src/ballistic/v50.rs",
     "src/ballistic/thresholds.rs",
     "src/ballistic/fit.rs",
+    "src/ballistic/pictures.rs",
+    "src/report",
 ];
 
 fn files(dir: &Path, out: &mut Vec<PathBuf>) {
@@ -63,4 +65,26 @@ fn main() {
     println!("cargo:rerun-if-changed=Cargo.toml");
     println!("cargo:rerun-if-changed=Cargo.lock");
     println!("cargo:rustc-env=DEMSWEEP_BUILD={h:016x}");
+    commit();
+}
+
+/// The commit checked out when this was built (`DEMSWEEP_COMMIT`: 12 hex digits, `-dirty` when
+/// tracked files differed from it then; `unknown` outside a git checkout), for provenance only:
+/// a run is reused by its build id, which a commit of documentation alone leaves as it was.
+fn commit() {
+    let git = |args: &[&str]| std::process::Command::new("git").args(args).output().ok().filter(|o| o.status.success()).map(|o| String::from_utf8_lossy(&o.stdout).trim().to_string());
+    let commit = match git(&["rev-parse", "--short=12", "HEAD"]) {
+        Some(c) if !c.is_empty() => {
+            let dirty = git(&["status", "--porcelain", "--untracked-files=no"]).is_some_and(|s| !s.is_empty());
+            format!("{c}{}", if dirty { "-dirty" } else { "" })
+        }
+        _ => "unknown".to_string(),
+    };
+    println!("cargo:rustc-env=DEMSWEEP_COMMIT={commit}");
+    // A new commit moves HEAD or the branch it names.
+    println!("cargo:rerun-if-changed=.git/HEAD");
+    if let Some(branch) = std::fs::read_to_string(".git/HEAD").ok().and_then(|h| h.strip_prefix("ref: ").map(|r| r.trim().to_string())) {
+        println!("cargo:rerun-if-changed=.git/{branch}");
+        println!("cargo:rerun-if-changed=.git/packed-refs");
+    }
 }

@@ -131,3 +131,34 @@ fn the_pictures_are_the_first_packings_first_outcomes_made_again() {
     assert!(std::fs::read_dir(out.join("pictures")).unwrap().next().is_none());
     std::fs::remove_dir_all(&out).unwrap();
 }
+
+/// `manifest.json` is JSON a reader parses, naming the command, the times, the machine and the
+/// program that made the folder.
+#[test]
+fn the_manifest_names_what_made_the_folder() {
+    let dir = std::env::temp_dir().join(format!("demsweep-manifest-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let started = std::time::SystemTime::now();
+    let path = demsweep::provenance::write_manifest(&dir, started).unwrap();
+    let m: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(m["build"], demsweep::provenance::build_id());
+    assert_eq!(m["commit"], demsweep::provenance::commit());
+    assert_eq!(m["demsweep_version"], env!("CARGO_PKG_VERSION"));
+    assert!(m["command"].as_array().is_some_and(|a| !a.is_empty()));
+    assert!(m["cores"].as_u64().is_some_and(|n| n >= 1));
+    let (s, e) = (m["started_utc"].as_str().unwrap(), m["ended_utc"].as_str().unwrap());
+    assert!(s.len() == 20 && s.ends_with('Z') && s <= e, "{s} {e}");
+    assert_eq!(s, demsweep::provenance::utc(started));
+    // The report shows it.
+    assert!(demsweep::report::page(&dir).unwrap().contains("manifest.json"));
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn utc_is_the_civil_date() {
+    use std::time::{Duration, UNIX_EPOCH};
+    assert_eq!(demsweep::provenance::utc(UNIX_EPOCH), "1970-01-01T00:00:00Z");
+    // 2000-02-29 (a leap day of a century leap year) 12:34:56, and 2026-12-06.
+    assert_eq!(demsweep::provenance::utc(UNIX_EPOCH + Duration::from_secs(951_827_696)), "2000-02-29T12:34:56Z");
+    assert_eq!(demsweep::provenance::utc(UNIX_EPOCH + Duration::from_secs(1_796_515_200)), "2026-12-06T00:00:00Z");
+}

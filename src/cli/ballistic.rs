@@ -115,6 +115,7 @@ fn print(r: &Report, out: &std::path::Path) {
 
 /// Run the sweep.
 pub fn run(args: Args) -> Result<()> {
+    let started = std::time::SystemTime::now();
     let (v0_min_fps, v0_max_fps) = crate::sweep::range::parse("--v0", &args.v0)?;
     let shard = args.shard.as_deref().map(parse_shard).transpose()?;
     let plan = Plan {
@@ -142,14 +143,17 @@ pub fn run(args: Args) -> Result<()> {
             println!("picture: {}", p.display());
         }
     }
+    crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }
 
 /// Merge shards.
 pub fn merge(args: MergeArgs) -> Result<()> {
+    let started = std::time::SystemTime::now();
     let report = ballistic::merge(&args.dirs, &args.out, args.bisect, args.threads, args.quiet)?;
     print(&report, &args.out);
+    crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }

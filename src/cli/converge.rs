@@ -39,6 +39,7 @@ pub struct Args {
 
 /// Run the study and print its tables.
 pub fn run(args: Args) -> Result<()> {
+    let started = std::time::SystemTime::now();
     let plan = Plan {
         case: args.case,
         mesh: args.mesh,
@@ -60,6 +61,7 @@ pub fn run(args: Args) -> Result<()> {
         _ => {}
     }
     println!("tables in {}", args.out.display());
+    crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());
     Ok(())
 }

@@ -35,6 +35,7 @@ pub struct Args {
 
 /// Run the sweep.
 pub fn run(args: Args) -> Result<()> {
+    let started = std::time::SystemTime::now();
     let jobs = match &args.table {
         Some(t) => from_table(t)?,
         None => grid(&args.vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>>>()?)?,
@@ -44,6 +45,7 @@ pub fn run(args: Args) -> Result<()> {
     let engine = Engine::new(&base, args.threads, args.quiet);
     let done = engine.run(&jobs, &mut store)?;
     eprintln!("{} runs made, {} found done; {} in {}", done.ran, done.skipped, store.len(), Store::csv_path(&args.out).display());
+    crate::provenance::write_manifest(&args.out, started)?;
     eprintln!("report: {}", crate::report::write(&args.out)?.display());
     done.check().map_err(|e| match e {
         Error::Input { message, .. } => Error::input("sweep", message),

@@ -83,7 +83,7 @@ pub fn page(dir: &Path) -> Result<String> {
     if let Some(t) = &sweep_toml {
         body += &format!("<p>The sweep's arguments (<code>sweep.toml</code>):</p>\n<pre>{}</pre>\n", escape(t));
     }
-    body += &provenance(runs.as_ref());
+    body += &provenance(dir, runs.as_ref());
     Ok(format!(
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>demsweep: {what}</title><style>{}</style></head><body>\n{body}</body></html>\n",
         html::STYLE
@@ -148,7 +148,7 @@ fn pictures(dir: &Path) -> Result<String> {
 }
 
 /// Which programs and scenes made the rows, and who wrote the page.
-fn provenance(runs: Option<&Table>) -> String {
+fn provenance(dir: &Path, runs: Option<&Table>) -> String {
     let mut out = String::from("<h2>Provenance</h2>\n<ul>\n");
     if let Some(r) = runs {
         for column in ["build", "scene_hash"] {
@@ -163,11 +163,15 @@ fn provenance(runs: Option<&Table>) -> String {
         }
     }
     out += &format!(
-        "<li>page written by demsweep {} (build <code>{}</code>) on {} UTC</li>\n</ul>\n",
+        "<li>page written by demsweep {} (build <code>{}</code>, commit <code>{}</code>) at {}</li>\n</ul>\n",
         env!("CARGO_PKG_VERSION"),
         crate::provenance::build_id(),
-        utc_now()
+        crate::provenance::commit(),
+        crate::provenance::utc(std::time::SystemTime::now())
     );
+    if let Ok(m) = std::fs::read_to_string(dir.join("manifest.json")) {
+        out += &format!("<p>What made the folder (<code>manifest.json</code>):</p>\n<pre>{}</pre>\n", escape(&m));
+    }
     out
 }
 
@@ -187,21 +191,4 @@ fn name(p: &Path) -> String {
 /// A picture's caption: its file name, read as words.
 fn caption(p: &Path) -> String {
     name(p).trim_end_matches(".png").replace('_', " ")
-}
-
-/// Now, as `YYYY-MM-DD HH:MM`.
-fn utc_now() -> String {
-    let secs = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_secs());
-    let (days, rest) = ((secs / 86_400) as i64, secs % 86_400);
-    // Days since 1970-01-01 to the civil date (Howard Hinnant's algorithm).
-    let z = days + 719_468;
-    let era = z.div_euclid(146_097);
-    let doe = z - era * 146_097;
-    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
-    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
-    let mp = (5 * doy + 2) / 153;
-    let d = doy - (153 * mp + 2) / 5 + 1;
-    let m = if mp < 10 { mp + 3 } else { mp - 9 };
-    let y = yoe + era * 400 + i64::from(m <= 2);
-    format!("{y:04}-{m:02}-{d:02} {:02}:{:02}", rest / 3600, rest % 3600 / 60)
 }
