@@ -11,8 +11,8 @@ use std::process::{Command, Output};
 use demsweep::table::Table;
 
 const BIN: &str = env!("CARGO_BIN_EXE_demsweep");
-/// Columns that measure the machine, not the run.
-const TIMING: [&str; 2] = ["wall_s", "element_steps_per_s"];
+/// Columns that measure the machine or record the engine, not the run.
+const TIMING: [&str; 3] = ["wall_s", "element_steps_per_s", "threads"];
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -68,6 +68,17 @@ fn the_tables_are_the_same_on_one_thread_and_on_two() {
     ballistic(&one, "1", &[]);
     ballistic(&two, "2", &[]);
     same_tables(&one, &two);
+    // Every row names what made it: its packing seed, the engine's threads, the program.
+    for (dir, threads) in [(&one, "1"), (&two, "2")] {
+        let runs = Table::read_csv(&dir.join("runs.csv")).unwrap();
+        for r in 0..runs.rows.len() {
+            assert_eq!(runs.get(r, "threads"), Some(threads));
+            assert_eq!(runs.get(r, "seed"), Some(""), "the tiny beam is a regular lattice: no packing seed");
+            assert_eq!(runs.get(r, "version"), Some(env!("CARGO_PKG_VERSION")));
+            assert_eq!(runs.get(r, "commit"), Some(demsweep::provenance::commit()));
+            assert_eq!(runs.get(r, "build"), Some(demsweep::provenance::build_id()));
+        }
+    }
     // Both thresholds were bisected to the tolerance, scabbing not above perforation.
     let t = Table::read_csv(&one.join("thresholds.csv")).unwrap();
     let f = |r: usize, c: &str| -> f64 { t.get(r, c).unwrap().parse().unwrap() };

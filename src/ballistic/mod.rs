@@ -287,6 +287,7 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], p
         chains.push(schedule::Chain::new("perforated", "bisect perforation", points(store, &mine, "perforated")).with_fixed(fixed.clone()));
     }
     let level = engine.base.level();
+    store.threads = engine.thread_count();
     let mut book = Kept { store: &mut *store, level: &level };
     let make = |j: &Job, wanted: &std::sync::atomic::AtomicBool| engine.run_one(j, wanted);
     let (chains, tally) = schedule::bisect(chains, &mut book, tol_fps, engine.thread_count(), engine.quiet, &make)?;

@@ -59,6 +59,7 @@ impl Engine<'_> {
     /// Run every job of `jobs` that `store` does not hold yet; `store` is kept on disk as they
     /// finish. Checks every job's overrides before the first run starts.
     pub fn run(&self, jobs: &[Job], store: &mut Store) -> Result<Finished> {
+        store.threads = self.thread_count();
         for j in jobs {
             j.check(self.base)?;
         }

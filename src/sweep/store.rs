@@ -15,8 +15,11 @@ use super::job::{Base, Job};
 use crate::error::{Error, Result};
 use crate::table::Table;
 
-/// The columns every row starts with, ahead of the run's own summary row.
-pub const KEY_COLUMNS: [&str; 5] = ["run_id", "purpose", "scene_hash", "build", "level"];
+/// The columns every row starts with, ahead of the run's own summary row: what the run is
+/// (`run_id`, `purpose`, `level`, the packing `seed`), and what made it (`scene_hash`, `build`;
+/// the engine's `threads`, the program's `version` and the `commit` it was built from, for the
+/// record: a row is reused by its build, whatever its commit or thread count).
+pub const KEY_COLUMNS: [&str; 9] = ["run_id", "purpose", "scene_hash", "build", "level", "seed", "threads", "version", "commit"];
 
 /// Index of `level` in [`KEY_COLUMNS`].
 const LEVEL: usize = 4;
@@ -67,6 +70,11 @@ pub struct Store {
     rows: BTreeMap<String, Vec<String>>,
     /// Write `runs.parquet` beside the CSV with every update.
     pub parquet: bool,
+    /// The scene's own packing seed (`target.seed`; empty for a scene without a random packing),
+    /// for runs that do not set it.
+    pub seed: String,
+    /// Threads of the engine making the runs (its `--threads`, resolved).
+    pub threads: usize,
 }
 
 impl Store {
@@ -89,6 +97,12 @@ impl Store {
             }
         }
         let mut store = Self::open_as(dir, &base.hash, &base.path)?;
+        // A regular lattice has no packing to seed.
+        if let crate::scene_file::SceneFile::Penetration(p) = &base.scene
+            && (p.penetration.dim == 3 || p.target.arrangement == crate::material::Arrangement::Irregular)
+        {
+            store.seed = p.target.seed.to_string();
+        }
         let others: Vec<String> = store.rows_by_build().into_keys().filter(|b| b != build_id()).collect();
         for b in others {
             let rows: Vec<Vec<String>> = store.rows.values().filter(|r| store_build(&store.header, r) == b).cloned().collect();
@@ -123,6 +137,8 @@ impl Store {
             header: Vec::new(),
             rows: BTreeMap::new(),
             parquet: true,
+            seed: String::new(),
+            threads: 0,
         };
         if path.exists() {
             let t = Table::read_csv(&path)?;
@@ -219,7 +235,9 @@ impl Store {
     /// Add a finished run's summary row (the key columns are put in front).
     pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
         let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
-        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), self.build.clone(), level.to_string()];
+        let seed = job.overrides.iter().find(|o| o.field == "target.seed").map_or_else(|| self.seed.clone(), |o| o.value.to_string());
+        let (version, commit) = (env!("CARGO_PKG_VERSION").to_string(), crate::provenance::commit().to_string());
+        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), self.build.clone(), level.to_string(), seed, self.threads.to_string(), version, commit];
         let row_level = row.iter().find(|c| c.0 == "level").map(|c| c.1.clone());
         if let Some(l) = row_level {
             cells[LEVEL] = l;
