@@ -22,8 +22,7 @@ pub fn run(args: Args) -> Result<()> {
     if args.pictures {
         let runs = crate::table::Table::read_csv(&crate::sweep::store::Store::csv_path(&args.dir))?;
         let sweep = std::fs::read_to_string(args.dir.join("sweep.toml")).map_err(|e| crate::error::Error::io(args.dir.join("sweep.toml"), e))?;
-        let scene = sweep.parse::<toml::Table>().ok().and_then(|t| t.get("scene")?.as_str().map(PathBuf::from));
-        let scene = scene.ok_or_else(|| crate::error::Error::input("sweep.toml", "names no scene file"))?;
+        let scene = crate::report::scene_named(&sweep).ok_or_else(|| crate::error::Error::input("sweep.toml", "names no scene file"))?;
         for p in crate::ballistic::pictures::draw(&scene, &runs, &args.dir)? {
             println!("picture: {}", p.display());
         }

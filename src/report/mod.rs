@@ -39,7 +39,7 @@ pub fn page(dir: &Path) -> Result<String> {
     let thresholds = read("thresholds.csv")?;
     let runs = read("runs.csv")?;
     let sweep_toml = std::fs::read_to_string(dir.join("sweep.toml")).ok();
-    let scene_path = sweep_toml.as_deref().and_then(|t| t.parse::<toml::Table>().ok()).and_then(|t| t.get("scene")?.as_str().map(PathBuf::from));
+    let scene_path = sweep_toml.as_deref().and_then(scene_named);
     let scene_text = scene_path.as_ref().and_then(|p| std::fs::read_to_string(p).ok());
     let summaries = files(dir, |n| n.ends_with("_summary.csv"));
 
@@ -88,6 +88,11 @@ pub fn page(dir: &Path) -> Result<String> {
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>demsweep: {what}</title><style>{}</style></head><body>\n{body}</body></html>\n",
         html::STYLE
     ))
+}
+
+/// The scene file a folder's `sweep.toml` (its text) names.
+pub fn scene_named(sweep_toml: &str) -> Option<PathBuf> {
+    sweep_toml.parse::<toml::Table>().ok()?.get("scene")?.as_str().map(PathBuf::from)
 }
 
 /// The tool's question, for the scene's projectile and target when the scene can be read.
