@@ -271,6 +271,75 @@ fn runs_of_another_build_are_made_again_not_read_back() {
     std::fs::remove_dir_all(out).unwrap();
 }
 
+// Issue 47: a resumed sweep must not mix rows of another commit into its table silently; the
+// user says what to do with them (--reuse-older keeps this build's, --fresh none).
+#[test]
+fn rows_of_another_commit_are_refused_unless_told() {
+    let out = tmp("commit");
+    let o = out.to_str().unwrap();
+    let sweep = |extra: &[&str]| {
+        let mut args = vec!["sweep", "tests/data/tiny_beam.toml", "--vary", "projectile.v0_fps=300..400:100", "--out", o];
+        args.extend_from_slice(extra);
+        demsweep(&args)
+    };
+    assert!(sweep(&[]).status.success());
+    let fresh = untimed(&out.join("runs.csv"));
+    let ours = fresh.get(0, "commit").unwrap().to_string();
+    assert!(!ours.is_empty() && ours != "0123456789ab");
+    rewrite_column(&out.join("runs.csv"), "commit", Some("0123456789ab"));
+    let old = std::fs::read(out.join("runs.csv")).unwrap();
+    let refused = sweep(&[]);
+    let msg = String::from_utf8_lossy(&refused.stderr);
+    assert!(!refused.status.success(), "{msg}");
+    for part in ["another commit", "2 made by commit 0123456789ab", &format!("this is commit {ours}"), "--reuse-older", "--fresh"] {
+        assert!(msg.contains(part), "{part:?} in {msg}");
+    }
+    assert_eq!(std::fs::read(out.join("runs.csv")).unwrap(), old, "the table left as it was");
+    assert!(!sweep(&["--fresh", "--reuse-older"]).status.success(), "the two flags exclude each other");
+    // Told: the same build's rows are kept, and still name the commit that made them.
+    let kept = sweep(&["--reuse-older"]);
+    assert!(String::from_utf8_lossy(&kept.stderr).contains("0 runs made, 2 found done"), "{}", String::from_utf8_lossy(&kept.stderr));
+    assert_eq!(untimed(&out.join("runs.csv")).get(1, "commit"), Some("0123456789ab"));
+    // Another commit of another build: set aside and made again even when told to reuse.
+    rewrite_column(&out.join("runs.csv"), "build", Some("00000000000000ff"));
+    let remade = sweep(&["--reuse-older"]);
+    assert!(String::from_utf8_lossy(&remade.stderr).contains("2 runs made, 0 found done"));
+    assert_eq!(untimed(&out.join("runs.csv")), fresh);
+    // --fresh: every run made again by this commit.
+    rewrite_column(&out.join("runs.csv"), "commit", Some("0123456789ab"));
+    assert!(String::from_utf8_lossy(&sweep(&["--fresh"]).stderr).contains("2 runs made, 0 found done"));
+    assert_eq!(untimed(&out.join("runs.csv")), fresh);
+    std::fs::remove_dir_all(out).unwrap();
+}
+
+#[test]
+fn shards_of_different_commits_are_merged_only_when_told() {
+    let (a, b, out) = (tmp("commit-shard-1"), tmp("commit-shard-2"), tmp("commit-merged"));
+    ballistic(&a, "1", &["--shard", "1/2"]);
+    ballistic(&b, "1", &["--shard", "2/2"]);
+    rewrite_column(&b.join("runs.csv"), "commit", Some("0123456789ab"));
+    let merge = |extra: &[&str]| {
+        let mut args = vec!["merge", a.to_str().unwrap(), b.to_str().unwrap(), "--out", out.to_str().unwrap()];
+        args.extend_from_slice(extra);
+        demsweep(&args)
+    };
+    let o = merge(&[]);
+    let msg = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && msg.contains("several commits") && msg.contains("0123456789ab") && msg.contains("--reuse-older"), "{msg}");
+    assert!(!out.join("runs.csv").exists(), "no table written");
+    // Both of one other commit: joined, but bisected by this one only when told.
+    rewrite_column(&a.join("runs.csv"), "commit", Some("0123456789ab"));
+    assert!(merge(&[]).status.success());
+    let o = merge(&["--bisect"]);
+    assert!(!o.status.success() && String::from_utf8_lossy(&o.stderr).contains("another commit"), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = merge(&["--bisect", "--reuse-older"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(out.join("thresholds.csv").exists());
+    for d in [a, b, out] {
+        std::fs::remove_dir_all(d).unwrap();
+    }
+}
+
 #[test]
 fn shards_of_different_builds_are_not_merged() {
     let (a, b, out) = (tmp("build-shard-1"), tmp("build-shard-2"), tmp("build-merged"));

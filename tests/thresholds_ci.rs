@@ -45,7 +45,7 @@ fn check(stem: &str, scene: &str) {
         out: out.clone(),
         threads: 0,
         quiet: true,
-        fresh: false,
+        reuse: demsweep::sweep::Reuse::SameCommit,
         shard: None,
         packings: m.packings,
     };

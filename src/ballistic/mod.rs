@@ -98,8 +98,8 @@ pub struct Plan {
     pub threads: usize,
     /// No progress display.
     pub quiet: bool,
-    /// Remove the folder's old tables first.
-    pub fresh: bool,
+    /// What to do with the runs already in the folder.
+    pub reuse: crate::sweep::Reuse,
     /// Run one shard of the grid only (no bisection).
     pub shard: Option<(usize, usize)>,
     /// Packings (target seeds from the scene's on) to sweep; 1: the scene's own.
@@ -232,7 +232,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
         packings: plan.packings,
     };
     let packings = packing_overrides(&base, plan.packings)?;
-    let mut store = Store::open(&plan.out, &base, plan.fresh)?;
+    let mut store = Store::open(&plan.out, &base, plan.reuse)?;
     write_atomic(&plan.out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
     let engine = Engine::new(&base, plan.threads, plan.quiet);
     let jobs: Vec<Job> = grid_jobs(&grid, &packings)
@@ -395,7 +395,10 @@ fn fits(store: &Store, planned: &[Job], perforation: &Finding) -> (Option<fit::F
 
 /// `demsweep merge DIR… --out OUT [--bisect]`: the shards' runs as one table, checked to be
 /// of one scene and one grid; with `bisect`, the bisection and the thresholds.
-pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: bool) -> Result<Report> {
+///
+/// The shards must be of one commit, and with `bisect` of this program's commit (whose runs
+/// join them), unless `reuse_older`: then of one build, this one's to bisect.
+pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, reuse_older: bool, threads: usize, quiet: bool) -> Result<Report> {
     if dirs.is_empty() {
         return Err(Error::input("merge", "give the shard folders"));
     }
@@ -448,6 +451,16 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, threads: usize, quiet: 
     let missing: Vec<String> = grid_jobs(&grid, &packings).into_iter().filter(|j| !store.has(j)).map(|j| j.id()).collect();
     if !missing.is_empty() {
         return Err(Error::input("merge", format!("the shards miss grid runs {}: run every shard first", missing.join(", "))));
+    }
+    if !reuse_older {
+        let commits = store.rows_by_commit();
+        if commits.len() > 1 {
+            let list: Vec<String> = commits.iter().map(|(c, n)| format!("{n} of commit {c}")).collect();
+            return Err(Error::input("merge", format!("the shards were run by several commits of demsweep ({}): rerun them with one, or merge with --reuse-older if their builds agree", list.join(", "))));
+        }
+        if bisect {
+            store.refuse_other_commits(crate::provenance::commit())?;
+        }
     }
     store.write()?;
     let manifest = Manifest { shard: String::new(), ..first.clone() };

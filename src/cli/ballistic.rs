@@ -39,9 +39,14 @@ pub struct Args {
     /// an irregular target, 1 (its one packing) for a regular lattice.
     #[arg(long)]
     pub packings: Option<u32>,
-    /// Remove the folder's old tables first (a changed scene).
-    #[arg(long)]
+    /// Remove the folder's old tables first and make every run again.
+    #[arg(long, conflicts_with = "reuse_older")]
     pub fresh: bool,
+    /// Keep the folder's runs made by another commit of demsweep when this same build made them
+    /// (a commit that changed no physics); without it a folder holding another commit's runs is
+    /// refused.
+    #[arg(long)]
+    pub reuse_older: bool,
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
@@ -63,6 +68,11 @@ pub struct MergeArgs {
     /// Then bisect the thresholds and write thresholds.csv (runs the bisection's runs here).
     #[arg(long)]
     pub bisect: bool,
+    /// Merge shards of another commit (or of several) when one build made them all; without
+    /// it, shards of several commits, or (with --bisect) of another commit than this program's,
+    /// are refused.
+    #[arg(long)]
+    pub reuse_older: bool,
     /// Threads for the bisection.
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
@@ -127,7 +137,7 @@ pub fn run(args: Args) -> Result<()> {
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,
-        fresh: args.fresh,
+        reuse: crate::sweep::Reuse::from_flags(args.fresh, args.reuse_older),
         shard,
         packings: match args.packings {
             Some(n) => n,
@@ -151,7 +161,7 @@ pub fn run(args: Args) -> Result<()> {
 /// Merge shards.
 pub fn merge(args: MergeArgs) -> Result<()> {
     let started = std::time::SystemTime::now();
-    let report = ballistic::merge(&args.dirs, &args.out, args.bisect, args.threads, args.quiet)?;
+    let report = ballistic::merge(&args.dirs, &args.out, args.bisect, args.reuse_older, args.threads, args.quiet)?;
     print(&report, &args.out);
     crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());

@@ -32,9 +32,14 @@ pub struct Args {
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
-    /// Remove the folder's old runs first (the scene or the program changed).
-    #[arg(long)]
+    /// Remove the folder's old runs first and make every run again.
+    #[arg(long, conflicts_with = "reuse_older")]
     pub fresh: bool,
+    /// Keep the folder's runs made by another commit of demsweep when this same build made them
+    /// (a commit that changed no physics); without it a folder holding another commit's runs is
+    /// refused.
+    #[arg(long)]
+    pub reuse_older: bool,
 }
 
 /// Run the study and print its tables.
@@ -49,7 +54,7 @@ pub fn run(args: Args) -> Result<()> {
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,
-        fresh: args.fresh,
+        reuse: crate::sweep::Reuse::from_flags(args.fresh, args.reuse_older),
     };
     let report = converge::run(&plan)?;
     let (levels, summary) = converge::tables(&report);

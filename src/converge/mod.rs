@@ -165,8 +165,8 @@ pub struct Plan {
     pub threads: usize,
     /// No progress display.
     pub quiet: bool,
-    /// Remove the penetration runs' old table first.
-    pub fresh: bool,
+    /// What to do with the penetration runs already in the folder.
+    pub reuse: crate::sweep::Reuse,
 }
 
 /// Run the study; writes `<case>.csv`, `<case>_summary.csv` and `<case>_speed.png` under `out`.
@@ -237,7 +237,7 @@ fn penetration(plan: &Plan) -> Result<Vec<Level>> {
         })
         .collect();
     let dir = plan.out.join("penetration_runs");
-    let mut store = Store::open(&dir, &base, plan.fresh)?;
+    let mut store = Store::open(&dir, &base, plan.reuse)?;
     let engine = Engine::new(&base, plan.threads, plan.quiet);
     engine.run(&jobs, &mut store)?.check()?;
     jobs.iter()

@@ -22,4 +22,4 @@ pub mod store;
 pub use engine::{Engine, Finished};
 pub use job::{Job, Row, run_job};
 pub use plan::{Vary, grid, from_table};
-pub use store::Store;
+pub use store::{Reuse, Store};

@@ -6,6 +6,11 @@
 //! Each row keeps the [`build_id`] of the program that made it, and only this build's rows are
 //! reused: the rows of another build (an older or newer demsweep, whose physics may differ) are
 //! set aside whole in `runs-build-<id>.csv` beside the table, and their runs made again.
+//!
+//! And each row names the `commit` its program was built from: a folder holding rows of another
+//! commit is refused unless the user says what to do with them ([`Reuse`]): make everything
+//! again (`--fresh`), or keep those of this same build (`--reuse-older`; a commit that changed no
+//! physics leaves the build unchanged). A table never mixes commits without being told to.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -26,6 +31,32 @@ const LEVEL: usize = 4;
 
 /// Rows of a table written by a build without the `build` column.
 const NO_BUILD: &str = "unknown";
+
+/// What a sweep does with the rows its folder already holds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Reuse {
+    /// Keep the rows this commit's build made (a resumed sweep); refuse a folder that holds
+    /// rows of another commit.
+    SameCommit,
+    /// Also keep rows another commit made with this same build (`--reuse-older`).
+    SameBuild,
+    /// Remove the folder's old tables first (`--fresh`).
+    Nothing,
+}
+
+impl Reuse {
+    /// From the command line's `--fresh` and `--reuse-older` (clap keeps them exclusive).
+    pub fn from_flags(fresh: bool, reuse_older: bool) -> Reuse {
+        match (fresh, reuse_older) {
+            (true, _) => Reuse::Nothing,
+            (false, true) => Reuse::SameBuild,
+            (false, false) => Reuse::SameCommit,
+        }
+    }
+}
+
+/// Rows of a table written before the `commit` column.
+const NO_COMMIT: &str = "unknown";
 
 /// The order of rows: each input value of the run id, numerically where it is a number.
 fn order_key(run_id: &str) -> Vec<(f64, String)> {
@@ -86,9 +117,10 @@ impl Store {
     /// Open the runs of `dir` for `base`: the rows already there are kept and their runs
     /// skipped if this build made them; rows of other builds are set aside (`set_aside`). Rows of
     /// another scene are never mixed in: that is an error that says how to start afresh, unless
-    /// `fresh`, which removes the folder's old tables first.
-    pub fn open(dir: &Path, base: &Base, fresh: bool) -> Result<Store> {
-        if fresh {
+    /// [`Reuse::Nothing`], which removes the folder's old tables first. Rows of another commit are
+    /// an error too, unless [`Reuse::SameBuild`].
+    pub fn open(dir: &Path, base: &Base, reuse: Reuse) -> Result<Store> {
+        if reuse == Reuse::Nothing {
             for name in ["runs.csv", "runs.parquet", "thresholds.csv"] {
                 let p = dir.join(name);
                 if p.exists() {
@@ -102,6 +134,9 @@ impl Store {
             && (p.penetration.dim == 3 || p.target.arrangement == crate::material::Arrangement::Irregular)
         {
             store.seed = p.target.seed.to_string();
+        }
+        if reuse == Reuse::SameCommit {
+            store.refuse_other_commits(crate::provenance::commit())?;
         }
         let others: Vec<String> = store.rows_by_build().into_keys().filter(|b| b != build_id()).collect();
         for b in others {
@@ -171,6 +206,33 @@ impl Store {
             *n.entry(store_build(&self.header, r).to_string()).or_insert(0) += 1;
         }
         n
+    }
+
+    /// Row counts by the commit that made them.
+    pub fn rows_by_commit(&self) -> BTreeMap<String, usize> {
+        let mut n = BTreeMap::new();
+        let k = self.header.iter().position(|h| h == "commit");
+        for r in self.rows.values() {
+            *n.entry(k.map_or(NO_COMMIT, |k| r[k].as_str()).to_string()).or_insert(0) += 1;
+        }
+        n
+    }
+
+    /// An error naming the rows not made by `commit`, and what to do.
+    pub fn refuse_other_commits(&self, commit: &str) -> Result<()> {
+        let other: Vec<String> = self.rows_by_commit().into_iter().filter(|(c, _)| c != commit).map(|(c, n)| format!("{n} made by commit {c}")).collect();
+        if other.is_empty() {
+            return Ok(());
+        }
+        Err(Error::input(
+            Self::csv_path(&self.dir).display().to_string(),
+            format!(
+                "holds runs of another commit of demsweep ({}; this is commit {commit}), and a table does not mix commits unless told: \
+                 rerun with --reuse-older to keep the runs this same build made (a commit that changed no physics keeps the build; \
+                 runs of other builds are set aside and made again), or with --fresh to make every run again",
+                other.join(", ")
+            ),
+        ))
     }
 
     /// Read the runs of a sweep folder as they are (a shard, for `merge`); the scene hash and
