@@ -11,6 +11,7 @@ pub mod ballistic;
 pub mod bench;
 pub mod calibrate;
 pub mod cases;
+pub mod chart;
 pub mod units;
 pub mod cli;
 pub mod converge;

@@ -340,6 +340,51 @@ fn shards_of_different_commits_are_merged_only_when_told() {
     }
 }
 
+// Issue 47: a run that fails (an unstable step refused, a blow-up) is a row with its status and
+// message, its summary cells empty; the other runs go on, the report lists the failures, the
+// exit says so, and a rerun makes the failed runs again.
+#[test]
+fn a_failed_run_is_a_row_with_its_message_and_the_others_go_on() {
+    let out = tmp("failed");
+    let o = out.to_str().unwrap();
+    // The cantilever's stability bound is 3.95e-4 s: 1e-3 s is refused, or forced through and
+    // blows up.
+    let sweep = || {
+        demsweep(&[
+            "sweep", "sweeps/cantilever.toml", "--vary", "scene.duration_s=0.05", "--vary", "time_step.refuse_unstable=true,false",
+            "--vary", "time_step.dt_s=1e-4,1e-3", "--out", o, "--quiet",
+        ])
+    };
+    let first = sweep();
+    let msg = String::from_utf8_lossy(&first.stderr);
+    assert!(!first.status.success() && msg.contains("2 run(s) failed"), "{msg}");
+    let t = Table::read_csv(&out.join("runs.csv")).unwrap();
+    let before = untimed(&out.join("runs.csv"));
+    assert_eq!(t.rows.len(), 4, "every run is a row");
+    for r in 0..4 {
+        let (id, status, message, steps) = (t.get(r, "run_id").unwrap(), t.get(r, "status").unwrap(), t.get(r, "message").unwrap(), t.get(r, "steps").unwrap());
+        if id.ends_with("dt_s=0.0001") {
+            assert_eq!((status, message, steps), ("ok", "", "500"), "{id}");
+        } else {
+            let why = if id.contains("refuse_unstable=true") { "exceeds the stability bound" } else { "numerical blow-up at step" };
+            assert_eq!(status, "failed", "{id}");
+            assert!(message.contains(why) && msg.contains(&format!("{id}: {message}")), "{id}: {message}");
+            assert_eq!(steps, "", "{id}: no outcome");
+        }
+    }
+    let page = std::fs::read_to_string(out.join("report.html")).unwrap();
+    assert!(page.contains("Failed runs (2)") && page.contains("numerical blow-up at step") && page.contains("exceeds the stability bound"));
+    let df = demsweep::sweep::parquet::read(&out.join("runs.parquet")).unwrap();
+    let status = df.column("status").unwrap().str().unwrap().clone();
+    assert_eq!((0..status.len()).filter(|&i| status.get(i) == Some("failed")).count(), 2);
+    // Rerun: the finished runs skipped, the failed ones made again (and failing again).
+    let again = sweep();
+    let msg = String::from_utf8_lossy(&again.stderr);
+    assert!(!again.status.success() && msg.contains("0 runs made, 2 found done") && msg.contains("2 run(s) failed"), "{msg}");
+    assert_eq!(untimed(&out.join("runs.csv")), before, "the same rows, the failures replaced by their like");
+    std::fs::remove_dir_all(out).unwrap();
+}
+
 #[test]
 fn shards_of_different_builds_are_not_merged() {
     let (a, b, out) = (tmp("build-shard-1"), tmp("build-shard-2"), tmp("build-merged"));

@@ -168,6 +168,9 @@ pub struct Report {
     pub packings: Vec<Packing>,
     /// With several packings: the V50 of scabbing and of perforation.
     pub v50: Option<(Option<v50::V50>, Option<v50::V50>)>,
+    /// The runs that failed (rows with status failed): (run id, message). The thresholds are
+    /// drawn without them; a bisection that needed one stopped at the bracket it had.
+    pub failed: Vec<(String, String)>,
 }
 
 /// One packing's thresholds.
@@ -194,6 +197,7 @@ impl Report {
             skipped,
             packings: Vec::new(),
             v50: None,
+            failed: Vec::new(),
         }
     }
 }
@@ -241,11 +245,11 @@ pub fn run(plan: &Plan) -> Result<Report> {
         .filter(|(k, _)| plan.shard.is_none_or(|(i, n)| k % n == i - 1))
         .map(|(_, j)| j)
         .collect();
+    // A failed grid run is a row with its status: the bisections go on without its outcome.
     let done = engine.run(&jobs, &mut store)?;
-    done.check()?;
     let (mut ran, mut skipped) = (done.ran, done.skipped);
     if plan.shard.is_some() {
-        return Ok(Report::empty(ran, skipped));
+        return Ok(Report { failed: store.failures(), ..Report::empty(ran, skipped) });
     }
     let report = bisect_and_report(&engine, &mut store, &grid, &packings, plan.tol_fps, &plan.out)?;
     ran += report.ran;
@@ -273,7 +277,7 @@ fn points(store: &Store, planned: &[Job], column: &str) -> Vec<Point> {
 /// `thresholds.csv` and the plot.
 pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], packings: &[Vec<Override>], tol_fps: f64, out: &Path) -> Result<Report> {
     let mut planned = grid_jobs(grid, packings);
-    if let Some(missing) = planned.iter().find(|j| !store.has(j)) {
+    if let Some(missing) = planned.iter().find(|j| !store.holds(j)) {
         return Err(Error::input(out.display().to_string(), format!("the grid run {} is missing: run every shard first", missing.id())));
     }
     // Two bisections a packing, all side by side on the engine's threads (`schedule`), each
@@ -329,7 +333,8 @@ pub fn bisect_and_report(engine: &Engine<'_>, store: &mut Store, grid: &[f64], p
     table.write_csv(&out.join("thresholds.csv"))?;
     let runs = store.table();
     plot::draw(&out.join("ballistic.png"), &runs, &ours, &formulas, grid)?;
-    Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped, packings: if several { found } else { Vec::new() }, v50 })
+    let failed = store.failures();
+    Ok(Report { scabbing, perforation, lambert_jonas, recht_ipson, thresholds: table, ran, skipped, packings: if several { found } else { Vec::new() }, v50, failed })
 }
 
 /// The bracket that holds every packing's: from the lowest velocity without the outcome to the
@@ -365,6 +370,11 @@ impl schedule::Book for Kept<'_> {
         }
         let cell = self.store.get(job, column).ok_or_else(|| Error::input(self.store.dir.display().to_string(), format!("run {} has no column `{column}`", job.id())))?;
         Ok(Some(cell == "true"))
+    }
+
+    fn keep_failed(&mut self, job: &Job, message: &str) -> Result<()> {
+        self.store.insert_failed(job, self.level, message);
+        self.store.write()
     }
 
     fn keep(&mut self, job: &Job, row: Option<&schedule::Row>) -> Result<()> {
@@ -448,7 +458,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, reuse_older: bool, thre
     }
     let grid = velocities(first.v0_min_fps, first.v0_max_fps, first.step_fps)?;
     let packings = packing_overrides(&base, first.packings)?;
-    let missing: Vec<String> = grid_jobs(&grid, &packings).into_iter().filter(|j| !store.has(j)).map(|j| j.id()).collect();
+    let missing: Vec<String> = grid_jobs(&grid, &packings).into_iter().filter(|j| !store.holds(j)).map(|j| j.id()).collect();
     if !missing.is_empty() {
         return Err(Error::input("merge", format!("the shards miss grid runs {}: run every shard first", missing.join(", "))));
     }
@@ -466,7 +476,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path, bisect: bool, reuse_older: bool, thre
     let manifest = Manifest { shard: String::new(), ..first.clone() };
     write_atomic(&out.join("sweep.toml"), toml::to_string(&manifest).expect("a manifest serialises").as_bytes())?;
     if !bisect {
-        return Ok(Report::empty(0, store.len()));
+        return Ok(Report { failed: store.failures(), ..Report::empty(0, store.len()) });
     }
     if store.build != build_id() {
         // The bisection's runs would be this build's, beside grid runs of another.

@@ -35,6 +35,8 @@ pub trait Book: Send {
     /// Keep a run a chain has asked for, on disk before returning: its row when made now, or
     /// None when the book holds it already (the chain's purpose is added to the row's).
     fn keep(&mut self, job: &Job, row: Option<&Row>) -> Result<()>;
+    /// Keep a run a chain asked for that failed, with its message, on disk before returning.
+    fn keep_failed(&mut self, job: &Job, message: &str) -> Result<()>;
 }
 
 /// One bisection.
@@ -50,12 +52,15 @@ pub struct Chain {
     pub points: Vec<Point>,
     /// Its own runs, in the order it asked for them (what evolves).
     pub runs: Vec<Job>,
+    /// The run that failed and stopped it, with the message (what evolves): its bracket stays
+    /// as wide as it was.
+    pub failed: Option<(Job, String)>,
 }
 
 impl Chain {
     /// A chain starting from the grid's points.
     pub fn new(column: &str, purpose: &str, grid: Vec<Point>) -> Chain {
-        Chain { fixed: Vec::new(), column: column.into(), purpose: purpose.into(), points: grid, runs: Vec::new() }
+        Chain { fixed: Vec::new(), column: column.into(), purpose: purpose.into(), points: grid, runs: Vec::new(), failed: None }
     }
 
     /// The same chain with its runs sharing `fixed` overrides.
@@ -113,6 +118,9 @@ struct State<'b> {
     made: HashMap<String, (Result<Row>, f64)>,
     /// Runs in flight: the flag that keeps each going.
     flight: HashMap<String, Arc<AtomicBool>>,
+    /// Runs a chain took that failed, by id: the message (each is made once; a rerun tries
+    /// again).
+    failed: HashMap<String, String>,
     error: Option<Error>,
     done: bool,
     tally: Tally,
@@ -121,7 +129,7 @@ struct State<'b> {
 /// Bisect every chain to `tol_fps` on `threads` threads (the calling one among them), making
 /// runs with `make`; returns the chains with their runs, and the tally.
 pub fn bisect(chains: Vec<Chain>, book: &mut dyn Book, tol_fps: f64, threads: usize, quiet: bool, make: &Make<'_>) -> Result<(Vec<Chain>, Tally)> {
-    let state = Mutex::new(State { chains, book, made: HashMap::new(), flight: HashMap::new(), error: None, done: false, tally: Tally::default() });
+    let state = Mutex::new(State { chains, book, made: HashMap::new(), flight: HashMap::new(), failed: HashMap::new(), error: None, done: false, tally: Tally::default() });
     let signal = Condvar::new();
     let work = || worker(&state, &signal, tol_fps, quiet, make);
     // Plain threads, not rayon tasks: a rayon worker that waits (polars writing the Parquet
@@ -211,19 +219,34 @@ impl State<'_> {
     }
 
     /// Every chain takes the runs it needs that are made or kept, in order, until it needs one
-    /// that is not (or is done). A needed run that failed is the schedule's error.
+    /// that is not (or is done). A needed run that failed is kept as failed and stops the chain
+    /// (and any other that needs it); the others go on.
     fn take(&mut self, tol_fps: f64) -> Result<()> {
         for c in 0..self.chains.len() {
             loop {
                 let chain = &self.chains[c];
+                if chain.failed.is_some() {
+                    break;
+                }
                 let Some(v) = bracket::find(&chain.points).next(tol_fps) else { break };
                 let j = chain.job(v, &chain.purpose);
+                if let Some(message) = self.failed.get(&j.id()).cloned() {
+                    self.book.keep_failed(&j, &message)?;
+                    self.chains[c].failed = Some((j, message));
+                    break;
+                }
                 match self.made.remove(&j.id()) {
                     Some((Ok(row), _)) => {
                         self.book.keep(&j, Some(&row))?;
                         self.tally.ran += 1;
                     }
-                    Some((Err(e), _)) => return Err(Error::input("sweep", format!("run {} failed: {e}", j.id()))),
+                    Some((Err(e), _)) => {
+                        let message = e.to_string();
+                        self.book.keep_failed(&j, &message)?;
+                        self.failed.insert(j.id(), message.clone());
+                        self.chains[c].failed = Some((j, message));
+                        break;
+                    }
                     None if self.book.outcome(&j, &chain.column)?.is_some() => {
                         self.book.keep(&j, None)?;
                         self.tally.skipped += 1;
@@ -245,7 +268,7 @@ impl State<'_> {
     /// is needed with 1 − (1 − a)(1 − b)).
     fn wants(&self, tol_fps: f64) -> Result<HashMap<String, Want>> {
         let mut all: HashMap<String, Want> = HashMap::new();
-        for c in &self.chains {
+        for c in self.chains.iter().filter(|c| c.failed.is_none()) {
             let mut mine = HashMap::new();
             self.grow(c, &mut c.points.clone(), 1.0, tol_fps, &mut mine)?;
             for (id, w) in mine {
@@ -300,7 +323,7 @@ impl State<'_> {
     fn pick(&self, wants: &HashMap<String, Want>) -> Option<(String, Job, f64)> {
         wants
             .iter()
-            .filter(|(id, _)| !self.flight.contains_key(*id) && !self.made.contains_key(*id))
+            .filter(|(id, _)| !self.flight.contains_key(*id) && !self.made.contains_key(*id) && !self.failed.contains_key(*id))
             // Not held by the book (a run it holds is known to every chain alike).
             .filter(|(_, w)| self.chains.first().is_none_or(|c| matches!(self.book.outcome(&w.job, &c.column), Ok(None))))
             .max_by(|a, b| a.1.p.total_cmp(&b.1.p).then(a.1.v_fps.total_cmp(&b.1.v_fps)).then(b.0.cmp(a.0)))
@@ -330,13 +353,18 @@ mod tests {
     const SCAB: f64 = 571.0;
     const PERF: f64 = 583.0;
 
-    /// A runs table in memory: row and purposes by run id.
+    /// A runs table in memory: row and purposes by run id (failed runs: an empty row).
     #[derive(Default)]
     struct Memo(BTreeMap<String, (Row, BTreeSet<String>)>);
 
     impl Book for Memo {
         fn outcome(&self, job: &Job, column: &str) -> Result<Option<bool>> {
-            Ok(self.0.get(&job.id()).map(|(row, _)| row.iter().any(|(k, x)| k == column && x == "true")))
+            Ok(self.0.get(&job.id()).filter(|(row, _)| !row.is_empty()).map(|(row, _)| row.iter().any(|(k, x)| k == column && x == "true")))
+        }
+
+        fn keep_failed(&mut self, job: &Job, _: &str) -> Result<()> {
+            self.0.entry(job.id()).or_insert_with(|| (Row::new(), BTreeSet::new())).1.insert(job.purpose.clone());
+            Ok(())
         }
 
         fn keep(&mut self, job: &Job, row: Option<&Row>) -> Result<()> {
@@ -447,7 +475,9 @@ mod tests {
     }
 
     #[test]
-    fn a_needed_run_that_fails_is_the_schedules_error_and_ends_the_guesses() {
+    fn a_needed_run_that_fails_is_kept_as_failed_and_stops_the_chains_that_need_it() {
+        // 575 is both chains' first midpoint: both stop there, with their grid brackets; the
+        // guesses in flight end.
         let make = |j: &Job, wanted: &AtomicBool| {
             if v_of(j) == 575.0 {
                 std::thread::sleep(Duration::from_millis(40));
@@ -456,8 +486,26 @@ mod tests {
             slow(10_000, SCAB, PERF)(j, wanted)
         };
         let mut book = Memo::default();
-        let e = bisect(chains(SCAB, PERF), &mut book, 5.0, 2, true, &make).unwrap_err().to_string();
-        assert!(e.contains("575") && e.contains("made-up failure"), "{e}");
-        assert!(book.0.is_empty());
+        let (done, _) = bisect(chains(SCAB, PERF), &mut book, 5.0, 2, true, &make).unwrap();
+        for c in &done {
+            let (j, message) = c.failed.as_ref().expect("stopped by the failure");
+            assert_eq!((v_of(j), message.contains("made-up failure")), (575.0, true), "{message}");
+            assert!(c.runs.is_empty());
+        }
+        assert_eq!(book.0.keys().collect::<Vec<_>>(), ["projectile.v0_fps=575"], "only the failure is kept, once");
+        assert!(book.0["projectile.v0_fps=575"].0.is_empty());
+    }
+
+    #[test]
+    fn a_run_only_one_chain_needs_failing_leaves_the_other_to_finish() {
+        // 575 scabs and does not perforate: perforation asks for 587.5 next, scabbing never.
+        assert!(!serial(SCAB).contains(&587.5) && serial(PERF).contains(&587.5));
+        let make = |j: &Job, wanted: &AtomicBool| if v_of(j) == 587.5 { Err(Error::input("projectile", "made-up failure")) } else { slow(0, SCAB, PERF)(j, wanted) };
+        let mut book = Memo::default();
+        let (done, _) = bisect(chains(SCAB, PERF), &mut book, 5.0, 1, true, &make).unwrap();
+        assert!(done[0].failed.is_none());
+        assert_eq!(velocities(&done[0]), serial(SCAB));
+        assert_eq!(done[1].failed.as_ref().map(|f| v_of(&f.0)), Some(587.5));
+        assert_eq!(velocities(&done[1]), [575.0]);
     }
 }

@@ -48,6 +48,8 @@ pub struct Empirical {
     pub usable: bool,
     /// Validity text.
     pub validity: String,
+    /// A form for plain concrete (the scene's wall), not for reinforced.
+    pub plain: bool,
 }
 
 /// Every formula's scabbing velocity and ballistic limit for the scene's wall.
@@ -70,6 +72,7 @@ pub fn empirical(s: &PenetrationScene) -> Result<Vec<Empirical>> {
                 v_fps: th.v_fps(),
                 usable,
                 validity,
+                plain: r.formula.for_plain_concrete(),
             });
         }
     }
@@ -79,7 +82,7 @@ pub fn empirical(s: &PenetrationScene) -> Result<Vec<Empirical>> {
 /// Whether a formula's row counts toward the band: usable here, and not a variant for reinforced
 /// concrete (Petry's `normal-rc`, `special-rc`): the scene's wall is plain concrete.
 pub fn in_band(r: &Empirical) -> bool {
-    r.usable && !r.method.contains("-rc)")
+    r.usable && r.plain
 }
 
 /// The band of usable plain-concrete formula velocities for a threshold, ft/s.
@@ -197,4 +200,12 @@ pub fn table(ours: &Ours<'_>, formulas: &[Empirical], bracket_points: (usize, us
         push(e.threshold, e.method.clone(), (None, None), e.v_fps, no_fit(), String::new(), note);
     }
     Table { header: HEADER.iter().map(|s| s.to_string()).collect(), rows }
+}
+
+/// The row of `thresholds.csv` that answers for `threshold`: the V50 over packings where there is
+/// one, else the bisection's bracket.
+pub fn best_row(t: &Table, threshold: &str) -> Option<usize> {
+    let rows: Vec<usize> = (0..t.rows.len()).filter(|&r| t.get(r, "threshold") == Some(threshold)).collect();
+    let method = |r: &usize| t.get(*r, "method").unwrap_or("");
+    rows.iter().find(|r| method(r).starts_with("v50")).or_else(|| rows.iter().find(|r| method(r).starts_with("bisection"))).copied()
 }

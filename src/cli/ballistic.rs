@@ -39,14 +39,9 @@ pub struct Args {
     /// an irregular target, 1 (its one packing) for a regular lattice.
     #[arg(long)]
     pub packings: Option<u32>,
-    /// Remove the folder's old tables first and make every run again.
-    #[arg(long, conflicts_with = "reuse_older")]
-    pub fresh: bool,
-    /// Keep the folder's runs made by another commit of demsweep when this same build made them
-    /// (a commit that changed no physics); without it a folder holding another commit's runs is
-    /// refused.
-    #[arg(long)]
-    pub reuse_older: bool,
+    /// What to do with the runs the folder holds already.
+    #[command(flatten)]
+    pub reuse: super::ReuseArgs,
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
@@ -123,6 +118,22 @@ fn print(r: &Report, out: &std::path::Path) {
     println!("{} runs made, {} found done; tables in {}", r.ran, r.skipped, out.display());
 }
 
+/// After the tables and the report are written: an error listing the failed runs, if any.
+fn failures(r: &Report) -> Result<()> {
+    if r.failed.is_empty() {
+        return Ok(());
+    }
+    let list: Vec<String> = r.failed.iter().map(|(id, m)| format!("  {id}: {m}")).collect();
+    Err(crate::error::Error::input(
+        "ballistic",
+        format!(
+            "{} run(s) failed (rows with status failed in runs.csv; the thresholds were drawn without them, and a bisection that needed one stopped at the bracket it had; a rerun retries them):\n{}",
+            r.failed.len(),
+            list.join("\n")
+        ),
+    ))
+}
+
 /// Run the sweep.
 pub fn run(args: Args) -> Result<()> {
     let started = std::time::SystemTime::now();
@@ -137,7 +148,7 @@ pub fn run(args: Args) -> Result<()> {
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,
-        reuse: crate::sweep::Reuse::from_flags(args.fresh, args.reuse_older),
+        reuse: args.reuse.reuse(),
         shard,
         packings: match args.packings {
             Some(n) => n,
@@ -155,7 +166,7 @@ pub fn run(args: Args) -> Result<()> {
     }
     crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());
-    Ok(())
+    failures(&report)
 }
 
 /// Merge shards.
@@ -165,5 +176,5 @@ pub fn merge(args: MergeArgs) -> Result<()> {
     print(&report, &args.out);
     crate::provenance::write_manifest(&args.out, started)?;
     println!("report: {}", crate::report::write(&args.out)?.display());
-    Ok(())
+    failures(&report)
 }

@@ -32,14 +32,9 @@ pub struct Args {
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
-    /// Remove the folder's old runs first and make every run again.
-    #[arg(long, conflicts_with = "reuse_older")]
-    pub fresh: bool,
-    /// Keep the folder's runs made by another commit of demsweep when this same build made them
-    /// (a commit that changed no physics); without it a folder holding another commit's runs is
-    /// refused.
-    #[arg(long)]
-    pub reuse_older: bool,
+    /// What to do with the runs the folder holds already.
+    #[command(flatten)]
+    pub reuse: super::ReuseArgs,
 }
 
 /// Run the study and print its tables.
@@ -54,7 +49,7 @@ pub fn run(args: Args) -> Result<()> {
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,
-        reuse: crate::sweep::Reuse::from_flags(args.fresh, args.reuse_older),
+        reuse: args.reuse.reuse(),
     };
     let report = converge::run(&plan)?;
     let (levels, summary) = converge::tables(&report);

@@ -5,6 +5,7 @@ use clap::{Parser, Subcommand};
 pub mod ballistic;
 pub mod bench;
 pub mod calibrate;
+pub mod chart;
 pub mod converge;
 pub mod empirical;
 pub mod report;
@@ -41,6 +42,9 @@ pub enum Command {
     /// Scabbing and perforation thresholds of a penetration scene: a velocity sweep, then
     /// bisection of both thresholds, with the empirical formulas beside them.
     Ballistic(ballistic::Args),
+    /// A design chart: both thresholds at several target thicknesses (a ballistic sweep each),
+    /// drawn as thickness against velocity over the empirical formulas' curves.
+    Chart(chart::Args),
     /// Refine a case and report observed orders, the Richardson extrapolate, GCI and cost.
     Converge(converge::Args),
     /// Join the shards of a ballistic sweep (`ballistic --shard i/n`) into one set of tables.
@@ -52,6 +56,31 @@ pub enum Command {
     Timestep(timestep::Args),
     /// Write an output folder's `report.html` again from its tables (the sweeps write it).
     Report(report::Args),
+}
+
+/// What to do with the runs an output folder holds already: one pair of flags for every command
+/// that sweeps.
+#[derive(Debug, clap::Args)]
+pub struct ReuseArgs {
+    /// Remove the folder's old tables first and make every run again.
+    #[arg(long, conflicts_with = "reuse_older")]
+    pub fresh: bool,
+    /// Keep the folder's runs made by another commit of demsweep when this same build made
+    /// them (a commit that changed no physics); without it a folder holding another commit's
+    /// runs is refused.
+    #[arg(long)]
+    pub reuse_older: bool,
+}
+
+impl ReuseArgs {
+    /// The flags as the store takes them.
+    pub fn reuse(&self) -> crate::sweep::Reuse {
+        match (self.fresh, self.reuse_older) {
+            (true, _) => crate::sweep::Reuse::Nothing,
+            (false, true) => crate::sweep::Reuse::SameBuild,
+            (false, false) => crate::sweep::Reuse::SameCommit,
+        }
+    }
 }
 
 /// Run the parsed command.
@@ -67,6 +96,7 @@ pub fn dispatch(cli: Cli) -> crate::error::Result<()> {
         Command::Ballistic(args) => ballistic::run(args),
         Command::Merge(args) => ballistic::merge(args),
         Command::Converge(args) => converge::run(args),
+        Command::Chart(args) => chart::run(args),
         Command::Timestep(args) => timestep::run(args),
         Command::Report(args) => report::run(args),
     }

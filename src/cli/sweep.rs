@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use crate::error::{Error, Result};
 use crate::sweep::job::Base;
-use crate::sweep::{Engine, Reuse, Store, Vary, from_table, grid};
+use crate::sweep::{Engine, Store, Vary, from_table, grid};
 
 /// Arguments of `demsweep sweep`.
 #[derive(Debug, clap::Args)]
@@ -25,14 +25,9 @@ pub struct Args {
     /// Threads, one run each (0: one per core).
     #[arg(long, default_value_t = 0)]
     pub threads: usize,
-    /// Remove the folder's old tables first and make every run again.
-    #[arg(long, conflicts_with = "reuse_older")]
-    pub fresh: bool,
-    /// Keep the folder's runs made by another commit of demsweep when this same build made them
-    /// (a commit that changed no physics); without it a folder holding another commit's runs is
-    /// refused.
-    #[arg(long)]
-    pub reuse_older: bool,
+    /// What to do with the runs the folder holds already.
+    #[command(flatten)]
+    pub reuse: super::ReuseArgs,
     /// No progress display.
     #[arg(long)]
     pub quiet: bool,
@@ -46,7 +41,7 @@ pub fn run(args: Args) -> Result<()> {
         None => grid(&args.vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>>>()?)?,
     };
     let base = Base::load(&args.scene)?;
-    let mut store = Store::open(&args.out, &base, Reuse::from_flags(args.fresh, args.reuse_older))?;
+    let mut store = Store::open(&args.out, &base, args.reuse.reuse())?;
     let engine = Engine::new(&base, args.threads, args.quiet);
     let done = engine.run(&jobs, &mut store)?;
     eprintln!("{} runs made, {} found done; {} in {}", done.ran, done.skipped, store.len(), Store::csv_path(&args.out).display());

@@ -204,6 +204,12 @@ impl Formula {
         }
     }
 
+    /// Whether the variant is for plain concrete (not Petry's reinforced-concrete classes): the
+    /// formulas a plain wall is compared with.
+    pub fn for_plain_concrete(&self) -> bool {
+        !matches!(self, Formula::Petry(PetryClass::NormalRc | PetryClass::SpecialRc))
+    }
+
     /// Human-readable name with citation year.
     pub fn title(&self) -> &'static str {
         match self {

@@ -66,7 +66,7 @@ pub fn table(t: &Table, columns: &[&str], max_rows: usize) -> String {
 
 /// The page's style: plain, printable, no external font.
 pub const STYLE: &str = "body{font-family:sans-serif;max-width:72em;margin:1.5em auto;padding:0 1em;color:#222}\
-h1{font-size:1.5em;margin-bottom:.2em}h2{font-size:1.2em;border-bottom:1px solid #ccc;margin-top:1.6em}\
+h1{font-size:1.5em;margin-bottom:.2em}h2{font-size:1.2em;border-bottom:1px solid #ccc;margin-top:1.6em}h2.failed{color:#a00}\
 .answer{font-size:1.15em;background:#f3f6fa;border:1px solid #c9d6e6;padding:.6em 1em}\
 .answer b{font-size:1.1em}table{border-collapse:collapse;font-size:.85em;margin:.5em 0}\
 td,th{border:1px solid #ccc;padding:.15em .5em;text-align:right}th{background:#eee}\

@@ -16,8 +16,8 @@ pub mod html;
 use html::escape;
 
 /// The columns of `runs.csv` a reader looks at first.
-const RUN_COLUMNS: [&str; 12] =
-    ["run_id", "purpose", "v0_fps", "depth_in", "scabbed", "scab_mass_lb", "perforated", "v_residual_fps", "end_reason", "elements", "wall_s", "build"];
+const RUN_COLUMNS: [&str; 13] =
+    ["run_id", "purpose", "v0_fps", "depth_in", "scabbed", "scab_mass_lb", "perforated", "v_residual_fps", "end_reason", "elements", "wall_s", "build", "status"];
 
 /// Rows of a table shown before "N more rows in the CSV".
 const MAX_ROWS: usize = 300;
@@ -38,17 +38,30 @@ pub fn page(dir: &Path) -> Result<String> {
     let read = |name: &str| -> Result<Option<Table>> { let p = dir.join(name); if p.is_file() { Table::read_csv(&p).map(Some) } else { Ok(None) } };
     let thresholds = read("thresholds.csv")?;
     let runs = read("runs.csv")?;
-    let sweep_toml = std::fs::read_to_string(dir.join("sweep.toml")).ok();
+    // A chart's folder names its scene in chart.toml.
+    let sweep_toml = std::fs::read_to_string(dir.join("sweep.toml")).or_else(|_| std::fs::read_to_string(dir.join("chart.toml"))).ok();
     let scene_path = sweep_toml.as_deref().and_then(scene_named);
     let scene_text = scene_path.as_ref().and_then(|p| std::fs::read_to_string(p).ok());
     let summaries = files(dir, |n| n.ends_with("_summary.csv"));
 
     let mut body = String::new();
-    let what = if thresholds.is_some() { "ballistic limits" } else if !summaries.is_empty() { "mesh study" } else { "sweep" };
+    let chart = read("chart.csv")?;
+    let what = if thresholds.is_some() {
+        "ballistic limits"
+    } else if chart.is_some() {
+        "design chart"
+    } else if !summaries.is_empty() {
+        "mesh study"
+    } else {
+        "sweep"
+    };
     body += &format!("<h1>demsweep: {what} — {}</h1>\n", escape(&dir.display().to_string()));
     body += &question(scene_path.as_deref());
     if let Some(t) = &thresholds {
         body += &answer(t);
+    }
+    if let Some(r) = &runs {
+        body += &failures(r);
     }
     for s in &summaries {
         body += &format!("<h2>Convergence: {}</h2>\n", escape(&name(s)));
@@ -90,6 +103,21 @@ pub fn page(dir: &Path) -> Result<String> {
     ))
 }
 
+/// The failed runs of a runs table (status `failed`), each with its message, right under the
+/// answer: a threshold drawn without them must say so.
+fn failures(runs: &Table) -> String {
+    let failed: Vec<usize> = (0..runs.rows.len()).filter(|&r| runs.get(r, "status") == Some(crate::sweep::store::FAILED)).collect();
+    if failed.is_empty() {
+        return String::new();
+    }
+    let rows = Table { header: vec!["run_id".into(), "purpose".into(), "message".into()], rows: failed.iter().map(|&r| ["run_id", "purpose", "message"].iter().map(|c| runs.get(r, c).unwrap_or("").to_string()).collect()).collect() };
+    format!(
+        "<h2 class=\"failed\">Failed runs ({})</h2>\n<p class=\"note\">These runs ended in an error, not an outcome: the thresholds above were drawn without them, and a bisection that needed one stopped at the bracket it had. A rerun makes them again.</p>\n{}",
+        failed.len(),
+        html::table(&rows, &[], MAX_ROWS)
+    )
+}
+
 /// The scene file a folder's `sweep.toml` (its text) names.
 pub fn scene_named(sweep_toml: &str) -> Option<PathBuf> {
     sweep_toml.parse::<toml::Table>().ok()?.get("scene")?.as_str().map(PathBuf::from)
@@ -116,12 +144,11 @@ fn question(scene: Option<&Path>) -> String {
 fn answer(t: &Table) -> String {
     let mut out = String::from("<div class=\"answer\">\n");
     for threshold in ["scabbing", "perforation"] {
-        let rows: Vec<usize> = (0..t.rows.len()).filter(|&r| t.get(r, "threshold") == Some(threshold)).collect();
         let method = |r: &usize| t.get(*r, "method").unwrap_or("");
-        let best = rows.iter().find(|r| method(r).starts_with("v50")).or_else(|| rows.iter().find(|r| method(r).starts_with("bisection")));
+        let best = crate::ballistic::thresholds::best_row(t, threshold);
         let cell = |r: usize, c: &str| t.get(r, c).unwrap_or("").to_string();
         let line = match best {
-            Some(&r) if !cell(r, "v_est_fps").is_empty() => format!(
+            Some(r) if !cell(r, "v_est_fps").is_empty() => format!(
                 "<b>{threshold}: {} ft/s</b> ({}: {}–{} ft/s); the formulas valid here give {}–{} ft/s ({}).",
                 cell(r, "v_est_fps"),
                 escape(method(&r)),
@@ -131,7 +158,7 @@ fn answer(t: &Table) -> String {
                 cell(r, "band_max_fps"),
                 if cell(r, "inside_band") == "true" { "inside" } else { "outside" }
             ),
-            Some(&r) => format!("<b>{threshold}: not found</b> in the range swept ({}).", escape(&cell(r, "note"))),
+            Some(r) => format!("<b>{threshold}: not found</b> in the range swept ({}).", escape(&cell(r, "note"))),
             None => format!("<b>{threshold}: not estimated</b> (no row in thresholds.csv)."),
         };
         out += &format!("<p>{line}</p>\n");

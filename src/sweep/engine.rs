@@ -2,8 +2,8 @@
 //! `Threading::Serial`, so a sweep of N runs on N threads never oversubscribes; the last runs
 //! borrow the cores the others left idle, [`super::share`]), every finished
 //! run sent over a crossbeam channel to one writer, which adds it to the [`Store`] and rewrites
-//! the tables at once. A run that fails is reported and left out (a rerun tries it again); the
-//! others go on.
+//! the tables at once. A run that fails is reported and written as a failed row (status and
+//! message; a rerun makes it again); the others go on.
 
 use super::job::{Base, Job, Row, run_job};
 use super::progress::Progress;
@@ -96,6 +96,10 @@ impl Engine<'_> {
                         }
                         Err(e) => {
                             progress.finished(&job.id(), Err(e.to_string()));
+                            store.insert_failed(job, &level, &e.to_string());
+                            if let Err(e) = store.write() {
+                                first_error.get_or_insert(e);
+                            }
                             failed.push((job.id(), e.to_string()));
                         }
                     }
@@ -139,6 +143,6 @@ impl Finished {
             return Ok(());
         }
         let list: Vec<String> = self.failed.iter().map(|(id, e)| format!("  {id}: {e}")).collect();
-        Err(Error::input("sweep", format!("{} run(s) failed (the others are in the table; a rerun retries these):\n{}", self.failed.len(), list.join("\n"))))
+        Err(Error::input("sweep", format!("{} run(s) failed (rows with status failed in the table, beside the others; a rerun retries them):\n{}", self.failed.len(), list.join("\n"))))
     }
 }

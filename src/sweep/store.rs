@@ -1,7 +1,7 @@
 //! The runs table of a sweep folder (`runs.csv`, and `runs.parquet` beside it): the finished
-//! runs of one scene, one row each, in a fixed order (by the runs' inputs), rewritten whole and
-//! atomically after every finished run, so that a sweep killed at any moment loses at most the
-//! runs in flight, and a rerun skips what is there.
+//! and failed runs of one scene, one row each, in a fixed order (by the runs' inputs), rewritten
+//! whole and atomically after every run, so that a sweep killed at any moment loses at most the
+//! runs in flight, and a rerun skips what is done.
 //!
 //! Each row keeps the [`build_id`] of the program that made it, and only this build's rows are
 //! reused: the rows of another build (an older or newer demsweep, whose physics may differ) are
@@ -11,6 +11,10 @@
 //! commit is refused unless the user says what to do with them ([`Reuse`]): make everything
 //! again (`--fresh`), or keep those of this same build (`--reuse-older`; a commit that changed no
 //! physics leaves the build unchanged). A table never mixes commits without being told to.
+//!
+//! A run that failed (a NaN, an unstable step, an impossible material) is a row too, with
+//! `status = failed`, its message, and its summary cells empty: the table records what was
+//! tried. It is not a finished run: a rerun makes it again, and its row is replaced.
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
@@ -23,8 +27,18 @@ use crate::table::Table;
 /// The columns every row starts with, ahead of the run's own summary row: what the run is
 /// (`run_id`, `purpose`, `level`, the packing `seed`), and what made it (`scene_hash`, `build`;
 /// the engine's `threads`, the program's `version` and the `commit` it was built from, for the
-/// record: a row is reused by its build, whatever its commit or thread count).
-pub const KEY_COLUMNS: [&str; 9] = ["run_id", "purpose", "scene_hash", "build", "level", "seed", "threads", "version", "commit"];
+/// record: a row is reused by its build, whatever its commit or thread count), and how it ended:
+/// `status` (`ok`, or `failed` with the error in `message`).
+pub const KEY_COLUMNS: [&str; 11] = ["run_id", "purpose", "scene_hash", "build", "level", "seed", "threads", "version", "commit", "status", "message"];
+
+/// Index of `status` in [`KEY_COLUMNS`].
+const STATUS: usize = 9;
+/// Index of `message` in [`KEY_COLUMNS`].
+const MESSAGE: usize = 10;
+/// `status` of a run that ended with its outcome.
+pub const OK: &str = "ok";
+/// `status` of a run that failed.
+pub const FAILED: &str = "failed";
 
 /// Index of `level` in [`KEY_COLUMNS`].
 const LEVEL: usize = 4;
@@ -42,17 +56,6 @@ pub enum Reuse {
     SameBuild,
     /// Remove the folder's old tables first (`--fresh`).
     Nothing,
-}
-
-impl Reuse {
-    /// From the command line's `--fresh` and `--reuse-older` (clap keeps them exclusive).
-    pub fn from_flags(fresh: bool, reuse_older: bool) -> Reuse {
-        match (fresh, reuse_older) {
-            (true, _) => Reuse::Nothing,
-            (false, true) => Reuse::SameBuild,
-            (false, false) => Reuse::SameCommit,
-        }
-    }
 }
 
 /// Rows of a table written before the `commit` column.
@@ -258,15 +261,31 @@ impl Store {
         Ok(store)
     }
 
-    /// Whether `job` has finished.
+    /// Whether `job` has finished with its outcome (a failed run has not).
     pub fn has(&self, job: &Job) -> bool {
+        self.rows.get(&job.id()).is_some_and(|r| self.is_ok(r))
+    }
+
+    /// Whether the table holds a row of `job`, finished or failed.
+    pub fn holds(&self, job: &Job) -> bool {
         self.rows.contains_key(&job.id())
     }
 
-    /// The cell of column `name` of `job`'s row.
+    /// A row's status is `ok` (a table before the column held finished runs only).
+    fn is_ok(&self, row: &[String]) -> bool {
+        self.header.iter().position(|h| h == "status").is_none_or(|k| row.get(k).is_some_and(|s| s == OK))
+    }
+
+    /// The cell of column `name` of `job`'s row, if the run finished.
     pub fn get(&self, job: &Job, name: &str) -> Option<&str> {
         let k = self.header.iter().position(|h| h == name)?;
-        Some(self.rows.get(&job.id())?[k].as_str())
+        let row = self.rows.get(&job.id()).filter(|r| self.is_ok(r))?;
+        row.get(k).map(String::as_str)
+    }
+
+    /// The failed runs: (run id, message), in the table's order.
+    pub fn failures(&self) -> Vec<(String, String)> {
+        self.table().rows.into_iter().filter(|r| !self.is_ok(r)).map(|r| (r[0].clone(), r.get(MESSAGE).cloned().unwrap_or_default())).collect()
     }
 
     /// Number of rows.
@@ -294,12 +313,44 @@ impl Store {
         changed
     }
 
-    /// Add a finished run's summary row (the key columns are put in front).
-    pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
-        let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
+    /// The key cells of a row of `job` (status ok, no message).
+    fn key_cells(&self, job: &Job, level: &str) -> Vec<String> {
         let seed = job.overrides.iter().find(|o| o.field == "target.seed").map_or_else(|| self.seed.clone(), |o| o.value.to_string());
         let (version, commit) = (env!("CARGO_PKG_VERSION").to_string(), crate::provenance::commit().to_string());
-        let mut cells = vec![job.id(), job.purpose.clone(), self.hash.clone(), self.build.clone(), level.to_string(), seed, self.threads.to_string(), version, commit];
+        vec![job.id(), job.purpose.clone(), self.hash.clone(), self.build.clone(), level.to_string(), seed, self.threads.to_string(), version, commit, OK.to_string(), String::new()]
+    }
+
+    /// Add a failed run: its key cells, `status = failed` and the message, the summary cells
+    /// empty. It replaces an earlier failure of the run, never a finished run.
+    pub fn insert_failed(&mut self, job: &Job, level: &str, message: &str) {
+        if self.has(job) {
+            return;
+        }
+        let mut cells = self.key_cells(job, level);
+        cells[STATUS] = FAILED.to_string();
+        // One line: a CSV cell a reader greps, and a table row in the report.
+        cells[MESSAGE] = message.split_whitespace().collect::<Vec<_>>().join(" ");
+        if self.header.is_empty() {
+            self.header = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
+        }
+        cells.resize(self.header.len(), String::new());
+        self.replace(job, cells);
+    }
+
+    /// Put `cells` as `job`'s row; the purposes of the row it replaces stay with the run.
+    fn replace(&mut self, job: &Job, cells: Vec<String>) {
+        if let Some(old) = self.rows.insert(job.id(), cells) {
+            let k = self.header.iter().position(|h| h == "purpose").expect("a key column");
+            self.add_purpose(&Job { purpose: old[k].clone(), ..job.clone() });
+        }
+        self.add_purpose(job);
+    }
+
+    /// Add a finished run's summary row (the key columns are put in front); it replaces the
+    /// run's failed row if there is one.
+    pub fn insert(&mut self, job: &Job, level: &str, row: &[(String, String)]) -> Result<()> {
+        let mut header: Vec<String> = KEY_COLUMNS.iter().map(|s| s.to_string()).collect();
+        let mut cells = self.key_cells(job, level);
         let row_level = row.iter().find(|c| c.0 == "level").map(|c| c.1.clone());
         if let Some(l) = row_level {
             cells[LEVEL] = l;
@@ -308,16 +359,19 @@ impl Store {
             header.push(k.clone());
             cells.push(v.clone());
         }
-        if self.header.is_empty() {
+        if self.header.len() <= KEY_COLUMNS.len() && header.starts_with(&self.header) {
+            // The first finished run: the failed rows before it get its (empty) columns.
             self.header = header;
+            let n = self.header.len();
+            self.rows.values_mut().for_each(|r| r.resize(n, String::new()));
         } else if self.header != header {
             return Err(Error::input(Self::csv_path(&self.dir).display().to_string(), "a run's row has other columns than the table's"));
         }
-        let again = self.rows.contains_key(&job.id());
-        if !again {
-            self.rows.insert(job.id(), cells);
+        if self.has(job) {
+            self.add_purpose(job);
+        } else {
+            self.replace(job, cells);
         }
-        self.add_purpose(job);
         Ok(())
     }
 
@@ -355,14 +409,18 @@ impl Store {
         if self.rows.is_empty() {
             self.build = other.build.clone();
         }
-        if !other.header.is_empty() {
-            if self.header.is_empty() {
-                self.header = other.header.clone();
-            } else if self.header != other.header {
-                return Err(Error::input(other.dir.display().to_string(), "its runs table has other columns"));
-            }
+        // A shard whose runs all failed has the key columns only: the other's summary columns
+        // are empty in its rows.
+        let (mine, theirs) = (self.header.len(), other.header.len());
+        let wider = if mine >= theirs { &self.header } else { &other.header };
+        let narrower = if mine >= theirs { &other.header } else { &self.header };
+        if !(wider.starts_with(narrower) && (narrower.len() == wider.len() || narrower.len() <= KEY_COLUMNS.len())) {
+            return Err(Error::input(other.dir.display().to_string(), "its runs table has other columns"));
         }
+        self.header = wider.clone();
         self.rows.extend(other.rows);
+        let n = self.header.len();
+        self.rows.values_mut().for_each(|r| r.resize(n, String::new()));
         Ok(())
     }
 }
@@ -381,6 +439,27 @@ fn store_build<'a>(header: &[String], row: &'a [String]) -> &'a str {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_failed_row_takes_the_summary_columns_later_and_gives_way_to_the_finished_run() {
+        let dir = std::env::temp_dir().join(format!("demsweep-store-failed-{}", std::process::id()));
+        let mut s = Store::open_as(&dir, "h", Path::new("scene.toml")).unwrap();
+        let job = |v: i64| Job { overrides: vec![crate::scene::overrides::Override { field: "projectile.v0_fps".into(), value: toml::Value::Integer(v) }], purpose: "grid".into() };
+        s.insert_failed(&job(1), "0", "blew up\n   at step 3");
+        assert!(!s.has(&job(1)) && s.holds(&job(1)));
+        assert_eq!(s.table().header, KEY_COLUMNS);
+        let row = vec![("depth_in".to_string(), "1.5".to_string())];
+        s.insert(&job(2), "0", &row).unwrap();
+        let t = s.table();
+        assert_eq!(t.header.last().map(String::as_str), Some("depth_in"));
+        assert_eq!([t.get(0, "status"), t.get(0, "message"), t.get(0, "depth_in")], [Some(FAILED), Some("blew up at step 3"), Some("")]);
+        assert_eq!(s.get(&job(1), "depth_in"), None, "a failed run has no outcome");
+        assert_eq!(s.failures(), [("projectile.v0_fps=1".to_string(), "blew up at step 3".to_string())]);
+        s.insert(&job(1), "0", &row).unwrap();
+        assert_eq!((s.has(&job(1)), s.get(&job(1), "depth_in"), s.failures().len()), (true, Some("1.5"), 0));
+        s.insert_failed(&job(1), "0", "again");
+        assert!(s.has(&job(1)), "a failure never replaces a finished run");
+    }
 
     #[test]
     fn rows_are_ordered_by_their_inputs_numerically() {
