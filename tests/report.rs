@@ -50,6 +50,11 @@ fn the_page_is_self_contained_and_its_images_are_the_folders() {
     }
     let plot = std::fs::read(dir.join("ballistic.png")).unwrap();
     assert!(sources.iter().any(|s| decode(&s["data:image/png;base64,".len()..]) == plot), "the plot inlined byte for byte");
+    // The page's own screenshot beside it is a picture of the page, not of the results.
+    let screenshot = Path::new(env!("CARGO_MANIFEST_DIR")).join("results/ballistic").join(demsweep::report::SCREENSHOT);
+    std::fs::copy(&screenshot, dir.join(demsweep::report::SCREENSHOT)).unwrap();
+    let page = std::fs::read_to_string(demsweep::report::write(&dir).unwrap()).unwrap();
+    assert_eq!(page.matches("<img").count(), sources.len(), "the screenshot is not on the page it shows");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -19,6 +19,10 @@ use html::escape;
 const RUN_COLUMNS: [&str; 13] =
     ["run_id", "purpose", "v0_fps", "depth_in", "scabbed", "scab_mass_lb", "perforated", "v_residual_fps", "end_reason", "elements", "wall_s", "build", "status"];
 
+/// The page's own screenshot (`scripts/report_screenshot.sh`): a picture of the page, not of the
+/// results, so never on it (the page would show itself, one screenshot older).
+pub const SCREENSHOT: &str = "report.png";
+
 /// Rows of a table shown before "N more rows in the CSV".
 const MAX_ROWS: usize = 300;
 
@@ -67,7 +71,7 @@ pub fn page(dir: &Path) -> Result<String> {
         body += &format!("<h2>Convergence: {}</h2>\n", escape(&name(s)));
         body += &html::table(&Table::read_csv(s)?, &[], MAX_ROWS);
     }
-    for png in files(dir, |n| n.ends_with(".png")) {
+    for png in files(dir, |n| n.ends_with(".png") && n != SCREENSHOT) {
         body += &html::figure(&std::fs::read(&png).map_err(|e| Error::io(&png, e))?, &caption(&png));
     }
     if let Some(t) = &thresholds {
