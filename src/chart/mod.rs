@@ -12,6 +12,7 @@ use std::path::{Path, PathBuf};
 
 use crate::ballistic::{self, thresholds};
 use crate::error::{Error, Result};
+use crate::penetration::scene::PenetrationScene;
 use crate::scene::overrides::{Override, apply};
 use crate::scene_file::SceneFile;
 use crate::sweep::Reuse;
@@ -99,8 +100,9 @@ pub fn scene_text(base: &Path, thickness_in: f64) -> Result<String> {
 }
 
 /// Check the plan and write every thickness's scene file (each read back and checked as a
-/// scene is, so a thickness the scene cannot take is refused before any run).
-fn prepare(plan: &Plan) -> Result<Vec<PathBuf>> {
+/// scene is, so a thickness the scene cannot take is refused before any run); the base scene
+/// as read, and the thicknesses' scene files.
+fn prepare(plan: &Plan) -> Result<(PenetrationScene, Vec<PathBuf>)> {
     if plan.thicknesses_in.len() < 2 {
         return Err(Error::input("--thickness-in", format!("a chart needs at least two thicknesses, got {}", plan.thicknesses_in.len())));
     }
@@ -114,9 +116,9 @@ fn prepare(plan: &Plan) -> Result<Vec<PathBuf>> {
         }
         seen.push(t);
     }
-    if !matches!(crate::scene_file::load(&plan.scene, &[])?, SceneFile::Penetration(_)) {
+    let SceneFile::Penetration(base) = crate::scene_file::load(&plan.scene, &[])? else {
         return Err(Error::input(plan.scene.display().to_string(), "a chart needs a penetration scene (a file with [penetration])"));
-    }
+    };
     let mut scenes = Vec::new();
     for &t in &plan.thicknesses_in {
         let text = scene_text(&plan.scene, t)?;
@@ -133,7 +135,7 @@ fn prepare(plan: &Plan) -> Result<Vec<PathBuf>> {
         }
         scenes.push(path);
     }
-    Ok(scenes)
+    Ok((base, scenes))
 }
 
 /// What a chart run did.
@@ -152,7 +154,7 @@ pub struct Report {
 /// Sweep every thickness (`ballistic` into its folder), then gather `chart.csv` and draw
 /// `chart.png`.
 pub fn run(plan: &Plan) -> Result<Report> {
-    let scenes = prepare(plan)?;
+    let (base, scenes) = prepare(plan)?;
     let manifest = Manifest {
         scene: &plan.scene,
         thicknesses_in: &plan.thicknesses_in,
@@ -188,8 +190,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
     }
     let points = gather(&plan.out, &plan.thicknesses_in)?;
     table(&points).write_csv(&plan.out.join("chart.csv"))?;
-    let SceneFile::Penetration(scene) = crate::scene_file::load(&plan.scene, &[])? else { unreachable!("checked in prepare") };
-    let (m, target) = thresholds::empirical_inputs(&scene)?;
+    let (m, target) = thresholds::empirical_inputs(&base)?;
     plot::draw(&plan.out.join("chart.png"), &points, &m, &target, (plan.v0_min_fps, plan.v0_max_fps))?;
     Ok(Report { points, ran, skipped, failed })
 }
