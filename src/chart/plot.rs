@@ -9,19 +9,15 @@ use std::path::Path;
 use plotters::prelude::*;
 
 use super::Point;
-use crate::empirical::plot::{curves, thickness_axes, usable_band};
+use crate::empirical::plot::{AreaResult, curves, thickness_axes, two_panels, usable_band};
 use crate::empirical::{Missile, Quantity, Target};
-use crate::error::{Error, Result};
+use crate::error::Result;
 
-const WIDTH_PX: u32 = 1600;
-const HEIGHT_PX: u32 = 800;
 const BAND: RGBColor = RGBColor(200, 215, 235);
 
 /// Draw the chart of `points` to `path` over velocities `v_range`, ft/s (widened to hold every
 /// interval), for the missile and wall of the base scene (the formulas' validity).
 pub fn draw(path: &Path, points: &[Point], m: &Missile, t: &Target, v_range: (f64, f64)) -> Result<()> {
-    crate::picture::font::ensure();
-    let err = |e: &dyn std::fmt::Display| Error::io(path, e);
     let (mut v_min, mut v_max) = v_range;
     for p in points {
         for v in [p.v_low_fps, p.v_est_fps, p.v_high_fps].into_iter().flatten() {
@@ -31,18 +27,12 @@ pub fn draw(path: &Path, points: &[Point], m: &Missile, t: &Target, v_range: (f6
     }
     let v_max = if v_max > v_min { v_max } else { v_min + 1.0 };
     let h_max = 1.3 * points.iter().map(|p| p.thickness_in).fold(0.0, f64::max);
-    let root = BitMapBackend::new(path, (WIDTH_PX, HEIGHT_PX)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| err(&e))?;
-    let (left, right) = root.split_horizontally(WIDTH_PX / 2);
-    for (area, q, threshold) in [(left, Quantity::Scabbing, "scabbing"), (right, Quantity::Perforation, "perforation")] {
+    two_panels(path, |area, q| {
+        let threshold = if q == Quantity::Scabbing { "scabbing" } else { "perforation" };
         let mine: Vec<&Point> = points.iter().filter(|p| p.threshold == threshold).collect();
-        panel(&area, q, &mine, m, t, (v_min, v_max), h_max).map_err(|e| err(&e))?;
-    }
-    root.present().map_err(|e| err(&e))?;
-    Ok(())
+        panel(area, q, &mine, m, t, (v_min, v_max), h_max)
+    })
 }
-
-type AreaResult = std::result::Result<(), DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>>;
 
 fn panel(
     area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>,

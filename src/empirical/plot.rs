@@ -48,23 +48,32 @@ const COLORS: [RGBColor; 22] = [
 /// Thick lines: inside the formula's stated validity (or none stated) for a wall of the curve's
 /// own thickness there; thin: outside.
 pub fn draw(path: &Path, m: &Missile, t: &Target, v_min_fps: f64, v_max_fps: f64) -> Result<()> {
+    two_panels(path, |area, q| {
+        let caption = match q {
+            Quantity::Scabbing => "Scabbing thickness h_s (cf. report Fig. 7.3)",
+            _ => "Perforation thickness h_p (cf. report Fig. 7.5)",
+        };
+        panel(area, q, caption, m, t, v_min_fps, v_max_fps)
+    })
+}
+
+/// What drawing on a PNG's area gives.
+pub type AreaResult = std::result::Result<(), DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>>;
+
+/// A PNG at `path` of two panels side by side, scabbing (left) and perforation (right), each
+/// drawn by `panel`, written whole.
+pub fn two_panels(path: &Path, mut panel: impl FnMut(&DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>, Quantity) -> AreaResult) -> Result<()> {
     crate::picture::font::ensure();
     let err = |e: &dyn std::fmt::Display| Error::io(path, e);
     let root = BitMapBackend::new(path, (WIDTH_PX, HEIGHT_PX)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| err(&e))?;
     let (left, right) = root.split_horizontally(WIDTH_PX / 2);
-    let panels = [
-        (left, Quantity::Scabbing, "Scabbing thickness h_s (cf. report Fig. 7.3)"),
-        (right, Quantity::Perforation, "Perforation thickness h_p (cf. report Fig. 7.5)"),
-    ];
-    for (area, q, caption) in panels {
-        panel(&area, q, caption, m, t, v_min_fps, v_max_fps).map_err(|e| err(&e))?;
+    for (area, q) in [(left, Quantity::Scabbing), (right, Quantity::Perforation)] {
+        panel(&area, q).map_err(|e| err(&e))?;
     }
     root.present().map_err(|e| err(&e))?;
     Ok(())
 }
-
-type AreaResult = std::result::Result<(), DrawingAreaErrorKind<<BitMapBackend<'static> as DrawingBackend>::ErrorType>>;
 
 fn panel(
     area: &DrawingArea<BitMapBackend<'_>, plotters::coord::Shift>,

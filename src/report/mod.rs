@@ -49,10 +49,9 @@ pub fn page(dir: &Path) -> Result<String> {
     let summaries = files(dir, |n| n.ends_with("_summary.csv"));
 
     let mut body = String::new();
-    let chart = read("chart.csv")?;
     let what = if thresholds.is_some() {
         "ballistic limits"
-    } else if chart.is_some() {
+    } else if dir.join("chart.csv").is_file() {
         "design chart"
     } else if !summaries.is_empty() {
         "mesh study"
