@@ -52,7 +52,8 @@ pub struct RunSummary {
     pub external_work_j: f64,
     /// Mass-proportional damping, J.
     pub mass_damping_j: f64,
-    /// What the contacts dissipated, by mechanism, J (`law::Dissipation`).
+    /// What the contacts dissipated, by mechanism (`law::Dissipation`), and in 3D the local
+    /// damping (`local_damping_j`), J.
     pub contacts: Columns,
     /// Everything dissipated, J.
     pub dissipated_j: f64,

@@ -66,6 +66,9 @@ pub struct Ledger<D> {
     pub external_j: f64,
     /// Mass-proportional Rayleigh damping, J.
     pub mass_damping_j: f64,
+    /// Local (non-viscous) damping of the element motion, J (3D kernel, `kernel3d::integrate`).
+    #[serde(default)]
+    pub local_damping_j: f64,
     /// What the contacts dissipated, by mechanism, and the bonds broken.
     pub contacts: D,
 }
@@ -73,7 +76,7 @@ pub struct Ledger<D> {
 impl<D: Mechanisms> Ledger<D> {
     /// Everything dissipated, J.
     pub fn dissipated_j(&self) -> f64 {
-        self.mass_damping_j + self.contacts.total_j()
+        self.mass_damping_j + self.local_damping_j + self.contacts.total_j()
     }
 
     /// Balance error given the present kinetic and strain energy, J (0 for a perfect ledger).

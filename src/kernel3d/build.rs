@@ -64,10 +64,17 @@ impl Builder {
             s.prescribed_mps.push([0.0; 3]);
             s.load_n.push([0.0; 3]);
             s.load_nm.push([0.0; 3]);
+            s.local_damping.push(0.0);
         }
         let range = start..self.spheres.len();
         self.bodies.push(Body { name: name.to_string(), elements: range.clone() });
         range
+    }
+
+    /// Damp the motion of the spheres in `range` locally at `ratio` of critical
+    /// (`integrate`: λ = π ζ).
+    pub fn damp_locally(&mut self, range: Range<usize>, ratio: f64) {
+        range.for_each(|e| self.spheres.local_damping[e] = std::f64::consts::PI * ratio);
     }
 
     /// Bond spheres i and j at their present distance.

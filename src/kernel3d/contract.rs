@@ -89,7 +89,10 @@ impl Simulation for Model {
         // The energies at the last whole step, second order in Δt (`kernel3d::energy`).
         let w = self.whole_step();
         let (ke, se) = (w.kinetic_j, w.strain_j);
-        let dissipated_j = w.mass_damping_j + l.contacts.total_j();
+        let dissipated_j = w.mass_damping_j + w.local_damping_j + l.contacts.total_j();
+        // Local damping (3D only) is listed after the contacts' mechanisms.
+        let mut by_mechanism: Vec<(String, f64)> = l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect();
+        by_mechanism.push(("local_damping_j".to_string(), w.local_damping_j));
         Tally {
             elements: self.spheres.len() as u64,
             bonds_broken: l.bonds_broken(),
@@ -101,7 +104,7 @@ impl Simulation for Model {
             strain_energy_j: se,
             external_work_j: w.external_j,
             mass_damping_j: w.mass_damping_j,
-            contacts_j: l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect(),
+            contacts_j: by_mechanism,
             dissipated_j,
             energy_residual_j: ke + se - (l.initial_j + w.external_j - dissipated_j),
             energy_in_j: l.initial_j + w.external_j.abs(),

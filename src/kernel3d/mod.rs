@@ -240,6 +240,7 @@ impl Model {
         let mut bad = (None, None);
         for r in reports.iter() {
             st.ledger.mass_damping_j += r.mass_damping_j;
+            st.ledger.local_damping_j += r.local_damping_j;
             st.ledger.external_j += r.external_j;
             bad = (bad.0.or(r.bad_in), bad.1.or(r.bad_out));
         }

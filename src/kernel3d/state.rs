@@ -27,6 +27,9 @@ pub struct Spheres {
     pub load_n: Vec<V3>,
     /// Constant external moment, N·m.
     pub load_nm: Vec<V3>,
+    /// Local damping coefficient λ (dimensionless, `integrate`): 0 for none.
+    #[serde(default)]
+    pub local_damping: Vec<f64>,
 }
 
 impl Spheres {

@@ -87,6 +87,10 @@ pub struct Slab {
     /// Seed of the projectile's packing.
     #[serde(default = "default_projectile_seed")]
     pub projectile_seed: u64,
+    /// The concrete's own damping, a fraction of critical (local damping, the same in every
+    /// mode; `kernel3d::integrate::local`). The steel and loose fragments are not damped.
+    #[serde(default = "default_damping_ratio", skip_serializing_if = "is_zero")]
+    pub damping_ratio: f64,
 }
 
 /// Half an inch at level 1: 3.5 spheres across the calibre (1.75 at level 0, 7 at level 2)
@@ -113,6 +117,12 @@ fn default_steel_density() -> f64 {
 fn default_projectile_seed() -> u64 {
     1
 }
+fn default_damping_ratio() -> f64 {
+    0.0
+}
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
+}
 
 
 impl Default for Slab {
@@ -126,6 +136,7 @@ impl Default for Slab {
             projectile_element_radius_in: None,
             steel_density_lbs2_per_in4: default_steel_density(),
             projectile_seed: default_projectile_seed(),
+            damping_ratio: default_damping_ratio(),
         }
     }
 }
@@ -367,6 +378,7 @@ impl PenetrationScene {
                     shape: None,
                     grading,
                     velocity_mps: [0.0; 3],
+                    local_damping_ratio: s.damping_ratio,
                 },
                 Body3 {
                     name: "projectile".into(),
@@ -379,6 +391,7 @@ impl PenetrationScene {
                     shape: Some(shape.clone()),
                     grading: None,
                     velocity_mps: axis.map(|k| v * k),
+                    local_damping_ratio: 0.0,
                 },
             ],
             fix,

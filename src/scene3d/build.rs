@@ -97,6 +97,7 @@ impl Scene3 {
             let material = self.solid(k);
             let range = bld.body(&b.name, &p.centres_m, &p.radii_m, k as u16, material.density_kg_per_m3);
             bld.mass_total(range.clone(), material.density_kg_per_m3 * p.volume_m3);
+            bld.damp_locally(range.clone(), b.local_damping_ratio);
             for &(i, j) in &p.bonds {
                 bld.bond(range.start + i as usize, range.start + j as usize);
             }

@@ -145,6 +145,14 @@ pub struct Body3 {
     /// Initial velocity, m/s.
     #[serde(default)]
     pub velocity_mps: [f64; 3],
+    /// The material's own damping, as local damping at this fraction of critical
+    /// (`kernel3d::integrate::local`; dimensionless, 0: none).
+    #[serde(default, skip_serializing_if = "is_zero")]
+    pub local_damping_ratio: f64,
+}
+
+fn is_zero(x: &f64) -> bool {
+    *x == 0.0
 }
 
 fn default_gap() -> f64 {
@@ -240,6 +248,10 @@ impl Scene3 {
             }
             if !(b.bond_gap_ratio.is_finite() && (0.0..=1.0).contains(&b.bond_gap_ratio)) {
                 return Err(Error::input(format!("{f}.bond_gap_ratio"), format!("must lie in [0, 1], got {}", b.bond_gap_ratio)));
+            }
+            // λ = π ζ must stay below 1, or the damping would turn a force around.
+            if !(b.local_damping_ratio.is_finite() && (0.0..0.3).contains(&b.local_damping_ratio)) {
+                return Err(Error::input(format!("{f}.local_damping_ratio"), format!("must lie in [0, 0.3), got {}", b.local_damping_ratio)));
             }
             if !b.velocity_mps.iter().all(|v| v.is_finite()) {
                 return Err(Error::input(format!("{f}.velocity_mps"), format!("must be finite, got {:?}", b.velocity_mps)));

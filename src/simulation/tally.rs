@@ -24,7 +24,8 @@ pub struct Tally {
     pub external_work_j: f64,
     /// Mass-proportional damping, J.
     pub mass_damping_j: f64,
-    /// What the contacts dissipated, by mechanism (column name, J).
+    /// What the contacts dissipated, by mechanism, and the 3D kernel's local damping (column
+    /// name, J).
     pub contacts_j: Vec<(String, f64)>,
     /// Everything dissipated, J.
     pub dissipated_j: f64,
