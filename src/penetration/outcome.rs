@@ -34,8 +34,9 @@
 //!   debris does not count); or the projectile perforated and has been clear of the back face,
 //!   by two element diameters, for `quiet_s` (`perforated`), time for the back face to shed
 //!   what the exit loosened; or the projectile has gone on into the target at a steady speed
-//!   (within `unresisted_change` of it, at ≥ 1 % of the impact speed) for `unresisted_s`
-//!   (`unresisted`): nothing pushes on it, so the target has given way and cannot stop it. It
+//!   (within `unresisted_change` of it, at ≥ 1 % of the impact speed) for `unresisted_s`, its
+//!   nose going in at least half as fast as its centre (`unresisted`): nothing pushes on it,
+//!   so the target has given way and cannot stop it. It
 //!   is then perforated (and scabbed) from the start of that stretch, with that speed as its
 //!   residual: in the 2D slice this is the beam broken into a mechanism, its halves swinging
 //!   away with the projectile between them, which a time cap would call lodged or perforated
@@ -114,9 +115,9 @@ pub struct Tracking {
     /// Since when the projectile has been clear of the back face, s.
     pub clear_since_s: Option<f64>,
     /// Since when (s) the projectile has gone on into the target at about one axial speed
-    /// (m/s): the start of an unresisted stretch.
+    /// (m/s), and its depth then (m): the start of an unresisted stretch.
     #[serde(default)]
-    pub unresisted_since: Option<(f64, f64)>,
+    pub unresisted_since: Option<(f64, f64, f64)>,
 }
 
 /// One look at the model, reduced to what the outcome and the stop rule need.
@@ -186,7 +187,13 @@ impl Tracking {
         // it) and cannot stop it any more, so it goes through, whatever a time cap would see.
         if l.v_axial_mps >= 0.01 * v0_mps {
             match self.unresisted_since {
-                Some((t0, v)) if (l.v_axial_mps - v).abs() <= spec.unresisted_change * v => {
+                // The nose must go on in too, at least half as fast: a projectile in free flight
+                // over its crater, turning as it drifts, has a centre moving in and a nose that
+                // does not (docs/penetration3d.md: packing 5 at 100 ft/s).
+                Some((t0, v, d0)) if l.time_s - t0 >= spec.unresisted_s && l.depth_m - d0 < 0.5 * v * (l.time_s - t0) => {
+                    self.unresisted_since = Some((l.time_s, l.v_axial_mps, l.depth_m));
+                }
+                Some((t0, v, _)) if (l.v_axial_mps - v).abs() <= spec.unresisted_change * v => {
                     if l.time_s - t0 >= spec.unresisted_s {
                         // A projectile that was through once keeps that first exit.
                         if self.perforation_time_s.is_none() {
@@ -197,7 +204,7 @@ impl Tracking {
                         return Some("unresisted");
                     }
                 }
-                _ => self.unresisted_since = Some((l.time_s, l.v_axial_mps)),
+                _ => self.unresisted_since = Some((l.time_s, l.v_axial_mps, l.depth_m)),
             }
         } else {
             self.unresisted_since = None;
