@@ -178,6 +178,8 @@ fn bad_fields_are_refused_by_name() {
     refused(&|s| s.slab = Some(Slab { max_element_radius_in: 0.4, ..Slab::default() }), "slab.max_element_radius_in");
     refused(&|s| s.slab = Some(Slab { fine_radius_in: -1.0, ..Slab::default() }), "slab.fine_radius_in");
     refused(&|s| s.slab = Some(Slab { radius_growth: f64::NAN, ..Slab::default() }), "slab.radius_growth");
+    refused(&|s| s.slab = Some(Slab { damping_ratio: 0.5, ..Slab::default() }), "slab.damping_ratio");
+    refused(&|s| s.slab = Some(Slab { damping_ratio: -0.01, ..Slab::default() }), "slab.damping_ratio");
     refused(&|s| s.projectile.weight_lb = 0.5, "projectile.weight_lb");
     refused(&|s| s.target.depth_in = 6.0, "target.depth_in");
     refused(&|s| s.target.length_in = 10.0, "target.length_in");

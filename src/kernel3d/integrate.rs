@@ -30,9 +30,10 @@ fn update(v: V3, accel: V3, p: &Params) -> (V3, f64) {
 /// Local (non-viscous) damping of a force (or moment) `f` on a sphere moving at `v`: each
 /// component less λ|fᵢ| along vᵢ (Cundall's local damping, as PFC's and YADE's
 /// NewtonIntegrator apply it). It opposes motion in proportion to the force that drives it, so a
-/// sphere in free flight or in steady motion loses nothing (a loose fragment is not dragged;
-/// a bonded cluster flying off, only as much as its own vibration pushes on it). A linear oscillator loses the fraction 4λ of its energy per cycle (the amplitude
-/// falls by (1 − λ)/(1 + λ) a cycle), as with a viscous damper at ζ = λ/π, whatever its frequency.
+/// sphere in free flight or in steady motion loses nothing (a loose fragment is not dragged; a
+/// bonded cluster flying off, only as much as its own vibration pushes on it). A linear
+/// oscillator loses the fraction 4λ of its energy a cycle (the amplitude falls by
+/// (1 − λ)/(1 + λ) a cycle), as with a viscous damper at ζ = λ/π, whatever its frequency.
 #[inline(always)]
 pub fn local(f: V3, v: V3, lambda: f64) -> V3 {
     let sign = |x: f64| if x > 0.0 { 1.0 } else if x < 0.0 { -1.0 } else { 0.0 };

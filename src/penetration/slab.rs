@@ -186,6 +186,10 @@ impl PenetrationScene {
                 return Err(Error::input(f, format!("must be a finite number ≥ 0, got {v}")));
             }
         }
+        // λ = π ζ below 1: a larger one would turn a force around.
+        if !(s.damping_ratio.is_finite() && (0.0..0.3).contains(&s.damping_ratio)) {
+            return Err(Error::input("slab.damping_ratio", format!("must lie in [0, 0.3), got {}", s.damping_ratio)));
+        }
         if s.max_element_radius_in < s.element_radius_in {
             return Err(Error::input(
                 "slab.max_element_radius_in",
