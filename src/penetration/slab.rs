@@ -34,7 +34,7 @@ use crate::kernel3d::solid::Solid;
 use crate::material::{CompactionSpec, FailureCriterion, RateSpec};
 use crate::packing3d::{Box3, Grading};
 use crate::scene::OutputSpec;
-use crate::scene3d::{Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
+use crate::scene3d::{self, Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
 use crate::shape3d::Projectile3;
 use crate::units::{M_PER_IN, fps_to_mps, in_to_m, lb_to_kg, lbs2_per_in4_to_kg_per_m3, psi_sqrt_in_to_pa_sqrt_m, psi_to_pa};
 
@@ -89,7 +89,7 @@ pub struct Slab {
     pub projectile_seed: u64,
     /// The concrete's own damping, a fraction of critical (local damping, the same in every
     /// mode; `kernel3d::integrate::local`). The steel and loose fragments are not damped.
-    #[serde(default = "default_damping_ratio", skip_serializing_if = "is_zero")]
+    #[serde(default = "default_damping_ratio", skip_serializing_if = "scene3d::is_zero")]
     pub damping_ratio: f64,
 }
 
@@ -119,9 +119,6 @@ fn default_projectile_seed() -> u64 {
 }
 fn default_damping_ratio() -> f64 {
     0.0
-}
-fn is_zero(x: &f64) -> bool {
-    *x == 0.0
 }
 
 
@@ -186,10 +183,7 @@ impl PenetrationScene {
                 return Err(Error::input(f, format!("must be a finite number ≥ 0, got {v}")));
             }
         }
-        // λ = π ζ below 1: a larger one would turn a force around.
-        if !(s.damping_ratio.is_finite() && (0.0..0.3).contains(&s.damping_ratio)) {
-            return Err(Error::input("slab.damping_ratio", format!("must lie in [0, 0.3), got {}", s.damping_ratio)));
-        }
+        scene3d::check_local_damping_ratio("slab.damping_ratio", s.damping_ratio)?;
         if s.max_element_radius_in < s.element_radius_in {
             return Err(Error::input(
                 "slab.max_element_radius_in",

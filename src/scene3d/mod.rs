@@ -151,8 +151,18 @@ pub struct Body3 {
     pub local_damping_ratio: f64,
 }
 
-fn is_zero(x: &f64) -> bool {
+/// Serde's test for a field left out when 0.
+pub(crate) fn is_zero(x: &f64) -> bool {
     *x == 0.0
+}
+
+/// A local damping ratio, checked for the field `field`: λ = π ζ must stay below 1, or the
+/// damping would turn a force around.
+pub(crate) fn check_local_damping_ratio(field: &str, ratio: f64) -> Result<()> {
+    if !(ratio.is_finite() && (0.0..0.3).contains(&ratio)) {
+        return Err(Error::input(field, format!("must lie in [0, 0.3), got {ratio}")));
+    }
+    Ok(())
 }
 
 fn default_gap() -> f64 {
@@ -249,10 +259,7 @@ impl Scene3 {
             if !(b.bond_gap_ratio.is_finite() && (0.0..=1.0).contains(&b.bond_gap_ratio)) {
                 return Err(Error::input(format!("{f}.bond_gap_ratio"), format!("must lie in [0, 1], got {}", b.bond_gap_ratio)));
             }
-            // λ = π ζ must stay below 1, or the damping would turn a force around.
-            if !(b.local_damping_ratio.is_finite() && (0.0..0.3).contains(&b.local_damping_ratio)) {
-                return Err(Error::input(format!("{f}.local_damping_ratio"), format!("must lie in [0, 0.3), got {}", b.local_damping_ratio)));
-            }
+            check_local_damping_ratio(&format!("{f}.local_damping_ratio"), b.local_damping_ratio)?;
             if !b.velocity_mps.iter().all(|v| v.is_finite()) {
                 return Err(Error::input(format!("{f}.velocity_mps"), format!("must be finite, got {:?}", b.velocity_mps)));
             }
