@@ -64,7 +64,6 @@ impl Builder {
             s.prescribed_mps.push([0.0; 3]);
             s.load_n.push([0.0; 3]);
             s.load_nm.push([0.0; 3]);
-            s.local_damping.push(0.0);
         }
         let range = start..self.spheres.len();
         self.bodies.push(Body { name: name.to_string(), elements: range.clone() });
@@ -74,7 +73,10 @@ impl Builder {
     /// Damp the motion of the spheres in `range` locally at `ratio` of critical
     /// (`integrate`: λ = π ζ).
     pub fn damp_locally(&mut self, range: Range<usize>, ratio: f64) {
-        range.for_each(|e| self.spheres.local_damping[e] = std::f64::consts::PI * ratio);
+        // Spheres added after this call are undamped: `build` pads the list to every sphere.
+        let s = &mut self.spheres;
+        s.local_damping.resize(s.len(), 0.0);
+        range.for_each(|e| s.local_damping[e] = std::f64::consts::PI * ratio);
     }
 
     /// Bond spheres i and j at their present distance.
@@ -122,7 +124,10 @@ impl Builder {
             .enumerate()
             .map(|(k, c)| c.ok_or_else(|| Error::input("class", format!("no contact class between kinds {} and {}", k / kinds, k % kinds))))
             .collect::<Result<_>>()?;
-        let s = self.spheres;
+        let mut s = self.spheres;
+        if !s.local_damping.is_empty() {
+            s.local_damping.resize(s.len(), 0.0);
+        }
         if let Some(e) = (0..s.len()).find(|&e| !(s.radius_m[e] > 0.0 && s.mass_kg[e] > 0.0 && s.initial_m[e].iter().all(|x| x.is_finite()))) {
             return Err(Error::input("sphere", format!("sphere {e}: radius {} m, mass {} kg, centre {:?} m", s.radius_m[e], s.mass_kg[e], s.initial_m[e])));
         }

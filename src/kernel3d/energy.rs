@@ -52,7 +52,7 @@ impl Model {
             let (m, i) = (sp.mass_kg[e], sp.inertia_kg_m2[e]);
             let (mut f, mut t) = (add(f, sp.load_n[e]), add(st.moment_nm[e], sp.load_nm[e]));
             let (f_in, t_in) = (f, t);
-            let lambda = sp.local_damping[e];
+            let lambda = sp.local_damping_of(e);
             if lambda > 0.0 {
                 // The motion the damping met, from the new half-step side (the old one is what
                 // is being undone): the same sign but where a component turned within the step.

@@ -80,6 +80,12 @@ pub struct Rows<'a> {
 
 /// Advance a chunk of spheres one step from their contact force and moment sums.
 pub fn advance(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
+    // A model that damps no sphere locally gets a loop without the damping's test per sphere.
+    if s.local_damping.is_empty() { advance_as::<false>(s, rows, p) } else { advance_as::<true>(s, rows, p) }
+}
+
+/// [`advance`], with local damping read per sphere (`LOCAL`) or absent.
+fn advance_as<const LOCAL: bool>(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
     let Rows { base, pos, vel, spin, force, moment } = rows;
     let mut r = Report::default();
     // x·0 is 0 for every finite x and NaN for ±∞ and NaN: one sum tells, with no branch per value.
@@ -99,16 +105,16 @@ pub fn advance(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
         } else {
             let (m, i) = (s.mass_kg[e], s.inertia_kg_m2[e]);
             let (mut f, mut t) = (add(force[k], s.load_n[e]), add(moment[k], s.load_nm[e]));
-            let lambda = s.local_damping[e];
+            let lambda = if LOCAL { s.local_damping[e] } else { 0.0 };
             let (f_in, t_in) = (f, t);
-            if lambda > 0.0 {
+            if LOCAL && lambda > 0.0 {
                 f = local(f, whole_step_velocity(vel[k], scale(1.0 / m, f), p), lambda);
                 t = local(t, whole_step_velocity(spin[k], scale(1.0 / i, t), p), lambda);
             }
             let (v, damped) = update(vel[k], scale(1.0 / m, f), p);
             let (w, damped_w) = update(spin[k], scale(1.0 / i, t), p);
             r.mass_damping_j += m * damped + i * damped_w;
-            if lambda > 0.0 {
+            if LOCAL && lambda > 0.0 {
                 // The damping force's work over the step, on the mean of the half-step velocities.
                 let mid = |a: V3, b: V3| scale(0.5, add(a, b));
                 r.local_damping_j -= (dot(sub(f, f_in), mid(v, before)) + dot(sub(t, t_in), mid(w, spin[k]))) * p.dt_s;

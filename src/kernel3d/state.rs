@@ -27,7 +27,8 @@ pub struct Spheres {
     pub load_n: Vec<V3>,
     /// Constant external moment, N·m.
     pub load_nm: Vec<V3>,
-    /// Local damping coefficient λ (dimensionless, `integrate`): 0 for none.
+    /// Local damping coefficient λ (dimensionless, `integrate`), one per sphere, 0 for an
+    /// undamped one; empty when the model damps none (the step then never reads it).
     #[serde(default)]
     pub local_damping: Vec<f64>,
 }
@@ -41,6 +42,11 @@ impl Spheres {
     /// True when there are none.
     pub fn is_empty(&self) -> bool {
         self.radius_m.is_empty()
+    }
+
+    /// Sphere e's local damping coefficient λ (0 where the model damps none).
+    pub fn local_damping_of(&self, e: usize) -> f64 {
+        self.local_damping.get(e).copied().unwrap_or(0.0)
     }
 }
 
