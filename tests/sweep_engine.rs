@@ -432,6 +432,8 @@ fn bad_input_is_refused_with_a_clear_message_and_no_table() {
         (vec!["converge", "--case", "sphere", "--out", o], "sphere"),
         (vec!["converge", "--mesh", "1", "--out", o], "--mesh"),
         (vec!["converge", "--case", "cantilever", "--ratio", "2", "--out", o], "refines by 3"),
+        (vec!["converge", "--case", "cantilever", "--packings", "2", "--out", o], "--packings"),
+        (vec!["converge", "--scene", "tests/data/tiny_beam.toml", "--mesh", "2", "--packings", "2", "--out", o], "irregular"),
         (vec!["merge", s_this.to_str().unwrap(), s_other.to_str().unwrap(), "--out", o], "another scene"),
     ];
     for (args, says) in cases {
@@ -487,4 +489,40 @@ fn a_sweep_over_packings_reports_v50s_and_each_packing_the_same_on_any_thread_co
     for d in [one, two] {
         std::fs::remove_dir_all(d).unwrap();
     }
+}
+
+/// `converge --packings`: each level's depth is the mean of its packings' runs (the rows the
+/// study stored, seeds from the scene's on), with their sample standard deviation; one packing
+/// keeps the run names of a study without packings.
+#[test]
+fn a_mesh_study_over_packings_reports_each_level_as_the_mean_of_its_packings() {
+    let out = tmp("converge-packings");
+    let o = out.to_str().unwrap().to_string();
+    ok(&["converge", "--scene", "tests/data/tiny_irregular.toml", "--mesh", "2", "--packings", "3", "--quiet", "--out", &o]);
+    let levels = Table::read_csv(&out.join("penetration.csv")).unwrap();
+    let runs = Table::read_csv(&out.join("penetration_runs/runs.csv")).unwrap();
+    assert_eq!(levels.rows.len(), 2);
+    for l in 0..2 {
+        let depths: Vec<f64> = (0..runs.rows.len())
+            .filter(|&r| runs.get(r, "run_id").unwrap().starts_with(&format!("penetration.level={l};")))
+            .map(|r| runs.get(r, "depth_in").unwrap().parse().unwrap())
+            .collect();
+        assert_eq!(depths.len(), 3, "level {l}: one run per packing");
+        let seeds = (1..=3).filter(|s| (0..runs.rows.len()).any(|r| runs.get(r, "run_id").unwrap() == format!("penetration.level={l};projectile.v0_fps=500;target.seed={s}"))).count();
+        assert_eq!(seeds, 3, "level {l}: seeds 1, 2 and 3");
+        let mean = depths.iter().sum::<f64>() / 3.0;
+        let sd = (depths.iter().map(|d| (d - mean).powi(2)).sum::<f64>() / 2.0).sqrt();
+        let f = |c: &str| -> f64 { levels.get(l, c).unwrap().parse().unwrap() };
+        assert!((f("depth_in") - mean).abs() <= 1e-8 * mean, "level {l}: {} against the runs' mean {mean}", f("depth_in"));
+        assert!((f("depth_in_sd") - sd).abs() <= 1e-3 * sd.max(1e-9), "level {l}: sd {} against {sd}", f("depth_in_sd"));
+        assert_eq!(levels.get(l, "packings"), Some("3"));
+    }
+    std::fs::remove_dir_all(&out).unwrap();
+    // One packing: the scene's own, named as before packings came in.
+    ok(&["converge", "--scene", "tests/data/tiny_irregular.toml", "--mesh", "2", "--quiet", "--out", &o]);
+    let runs = Table::read_csv(&out.join("penetration_runs/runs.csv")).unwrap();
+    assert_eq!(runs.get(0, "run_id"), Some("penetration.level=0;projectile.v0_fps=500"));
+    let levels = Table::read_csv(&out.join("penetration.csv")).unwrap();
+    assert_eq!((levels.get(0, "packings"), levels.get(0, "depth_in_sd")), (Some("1"), Some("")));
+    std::fs::remove_dir_all(out).unwrap();
 }

@@ -23,6 +23,10 @@ pub struct Args {
     /// Penetration: impact velocity, ft/s.
     #[arg(long, default_value_t = 500.0)]
     pub v0: f64,
+    /// Penetration: packings per level (target seeds from the scene's on), each level's depth
+    /// their mean (1: the scene's own packing). More than one needs an irregular target.
+    #[arg(long, default_value_t = 1)]
+    pub packings: u32,
     /// Output folder.
     #[arg(long, default_value = "results/converge")]
     pub out: PathBuf,
@@ -46,6 +50,7 @@ pub fn run(args: Args) -> Result<()> {
         ratio: args.ratio.unwrap_or(args.case.ratio()),
         scene: args.scene,
         v0_fps: args.v0,
+        packings: args.packings,
         out: args.out.clone(),
         threads: args.threads,
         quiet: args.quiet,

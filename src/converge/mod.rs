@@ -5,7 +5,9 @@
 //! Cases: the cantilever's tip amplitude and the cracked plate's critical far-field stress
 //! (energy criterion, close-packed, the seed's roller grips) — the validation studies of [1/5] —
 //! and the penetration depth at a velocity (the calibrated scene, its level varied through the
-//! sweep engine, so the levels run in parallel, one thread each, and a rerun reuses them).
+//! sweep engine, so the levels run in parallel, one thread each, and a rerun reuses them). On an
+//! irregular target a level's depth can be the mean over several packings, as the calibration
+//! takes it, so that a change between levels can be told from the packings' spread.
 
 pub mod plot;
 
@@ -73,12 +75,16 @@ pub struct Level {
     pub steps: u64,
     /// Time step, s.
     pub dt_s: f64,
-    /// Wall time, s.
+    /// Wall time, s (over the level's packings: what its figure cost).
     pub wall_s: f64,
-    /// The quantity.
+    /// The quantity (over several packings, their mean).
     pub value: f64,
+    /// Packings the level's figure is the mean over (1: one run).
+    pub packings: usize,
+    /// The quantity's sample standard deviation over the packings (none for one).
+    pub spread: Option<f64>,
     /// What the run ended as (penetration: scabbed / perforated, and `time_cap` if it never
-    /// settled), empty otherwise.
+    /// settled; over packings that end differently, each way with its count), empty otherwise.
     pub outcome: String,
 }
 
@@ -159,6 +165,8 @@ pub struct Plan {
     pub scene: PathBuf,
     /// Impact velocity, ft/s.
     pub v0_fps: f64,
+    /// Penetration: packings per level (target seeds from the scene's on; 1: the scene's own).
+    pub packings: u32,
     /// Output folder.
     pub out: PathBuf,
     /// Threads (penetration levels in parallel).
@@ -177,6 +185,9 @@ pub fn run(plan: &Plan) -> Result<Report> {
     if plan.mesh > 4 {
         return Err(Error::input("--mesh", format!("at most 4 levels here (the fourth penetration level has 870 000 elements), got {}", plan.mesh)));
     }
+    if plan.packings != 1 && plan.case != Case::Penetration {
+        return Err(Error::input("--packings", format!("only the penetration case has packings; the {} case has one mesh per level", plan.case.name())));
+    }
     if (plan.ratio - plan.case.ratio()).abs() > 1e-12 {
         return Err(Error::input(
             "--ratio",
@@ -190,7 +201,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
                     let (a, r) = cantilever::run(l)?;
                     Ok((cantilever::columns(l) * cantilever::rows(l), a, r))
                 })?;
-                Ok(Level { level: l, elements: lv.elements, h_m: cantilever::radius_m(l), steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, outcome: String::new() })
+                Ok(Level { level: l, elements: lv.elements, h_m: cantilever::radius_m(l), steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, packings: 1, spread: None, outcome: String::new() })
             })
             .collect::<Result<Vec<_>>>()?,
         Case::CrackedPlate => {
@@ -202,7 +213,7 @@ pub fn run(plan: &Plan) -> Result<Report> {
                         Ok((p.elements, p.stress_pa, r))
                     })?;
                     let h_m = Study::EnergyClosePacked.radius_m(l);
-                    Ok(Level { level: l, elements: lv.elements, h_m, steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, outcome: String::new() })
+                    Ok(Level { level: l, elements: lv.elements, h_m, steps: lv.steps, dt_s: lv.dt_s, wall_s: lv.wall_s, value: lv.value, packings: 1, spread: None, outcome: String::new() })
                 })
                 .collect::<Result<Vec<_>>>()?
         }
@@ -227,44 +238,106 @@ fn penetration(plan: &Plan) -> Result<Vec<Level>> {
         s.penetration.level = 0;
         s.concrete_radius_m()
     };
-    let jobs: Vec<Job> = (0..plan.mesh)
-        .map(|l| Job {
-            overrides: vec![
-                Override { field: "penetration.level".into(), value: toml::Value::Integer(l as i64) },
-                Override { field: crate::ballistic::V0_FIELD.into(), value: toml::Value::Float(plan.v0_fps) },
-            ],
-            purpose: "converge".into(),
+    // One packing keeps the runs' names of a study without packings (its folder stays usable).
+    let packings = crate::ballistic::packing_overrides(&base, plan.packings)?;
+    let levels: Vec<Vec<Job>> = (0..plan.mesh)
+        .map(|l| {
+            packings
+                .iter()
+                .map(|seed| Job {
+                    overrides: [
+                        Override { field: "penetration.level".into(), value: toml::Value::Integer(l as i64) },
+                        Override { field: crate::ballistic::V0_FIELD.into(), value: toml::Value::Float(plan.v0_fps) },
+                    ]
+                    .into_iter()
+                    .chain(seed.iter().cloned())
+                    .collect(),
+                    purpose: "converge".into(),
+                })
+                .collect()
         })
         .collect();
     let dir = plan.out.join("penetration_runs");
     let mut store = Store::open(&dir, &base, plan.reuse)?;
     let engine = Engine::new(&base, plan.threads, plan.quiet);
-    engine.run(&jobs, &mut store)?.check()?;
-    jobs.iter()
+    engine.run(&levels.concat(), &mut store)?.check()?;
+    levels
+        .iter()
         .enumerate()
-        .map(|(l, j)| {
-            let f = |c: &str| -> Result<f64> {
-                store.get(j, c).and_then(|v| v.parse().ok()).ok_or_else(|| Error::input(dir.display().to_string(), format!("run {} has no {c}", j.id())))
-            };
-            Ok(Level {
-                level: l as u32,
-                elements: f("elements")? as usize,
-                h_m: r0_m * 0.5f64.powi(l as i32),
-                steps: f("steps")? as u64,
-                dt_s: f("dt_s")?,
-                wall_s: f("wall_s")?,
-                value: f("depth_in")?,
-                // Embedded and rebounded are one outcome (held); a run cut at its time cap
-                // never settled, which is another.
-                outcome: format!(
-                    "scabbed={} perforated={}{}",
-                    store.get(j, "scabbed").unwrap_or(""),
-                    store.get(j, "perforated").unwrap_or(""),
-                    if store.get(j, "end_reason") == Some("time_cap") { " time_cap" } else { "" }
-                ),
-            })
+        .map(|(l, jobs)| {
+            let runs = jobs
+                .iter()
+                .map(|j| {
+                    let f = |c: &str| -> Result<f64> {
+                        store.get(j, c).and_then(|v| v.parse().ok()).ok_or_else(|| Error::input(dir.display().to_string(), format!("run {} has no {c}", j.id())))
+                    };
+                    Ok(PackingRun {
+                        elements: f("elements")?,
+                        steps: f("steps")?,
+                        dt_s: f("dt_s")?,
+                        wall_s: f("wall_s")?,
+                        depth_in: f("depth_in")?,
+                        // Embedded and rebounded are one outcome (held); a run cut at its time
+                        // cap never settled, which is another.
+                        outcome: format!(
+                            "scabbed={} perforated={}{}",
+                            store.get(j, "scabbed").unwrap_or(""),
+                            store.get(j, "perforated").unwrap_or(""),
+                            if store.get(j, "end_reason") == Some("time_cap") { " time_cap" } else { "" }
+                        ),
+                    })
+                })
+                .collect::<Result<Vec<_>>>()?;
+            Ok(over_packings(l as u32, r0_m * 0.5f64.powi(l as i32), &runs))
         })
         .collect()
+}
+
+/// One packing's run at a level: what its summary row says.
+#[derive(Debug, Clone, PartialEq)]
+pub struct PackingRun {
+    /// Elements.
+    pub elements: f64,
+    /// Steps.
+    pub steps: f64,
+    /// Time step, s.
+    pub dt_s: f64,
+    /// Wall time, s.
+    pub wall_s: f64,
+    /// Peak depth, in.
+    pub depth_in: f64,
+    /// How it ended (`penetration` above).
+    pub outcome: String,
+}
+
+/// A level's figures over its packings' runs: the mean depth and its sample standard
+/// deviation, the mean size and step, the summed cost, and the outcomes with their counts
+/// where the packings end differently. `h_m` is the level's element radius, m.
+pub fn over_packings(level: u32, h_m: f64, runs: &[PackingRun]) -> Level {
+    let n = runs.len() as f64;
+    let mean = |f: &dyn Fn(&PackingRun) -> f64| runs.iter().map(f).sum::<f64>() / n;
+    let value = mean(&|r| r.depth_in);
+    let spread = (runs.len() > 1).then(|| (runs.iter().map(|r| (r.depth_in - value).powi(2)).sum::<f64>() / (n - 1.0)).sqrt());
+    let mut ways: Vec<(&str, usize)> = Vec::new();
+    for r in runs {
+        match ways.iter_mut().find(|w| w.0 == r.outcome) {
+            Some(w) => w.1 += 1,
+            None => ways.push((&r.outcome, 1)),
+        }
+    }
+    let outcome = if ways.len() == 1 { ways[0].0.to_string() } else { ways.iter().map(|(o, k)| format!("{o} ×{k}")).collect::<Vec<_>>().join("; ") };
+    Level {
+        level,
+        elements: mean(&|r| r.elements).round() as usize,
+        h_m,
+        steps: mean(&|r| r.steps).round() as u64,
+        dt_s: mean(&|r| r.dt_s),
+        wall_s: runs.iter().map(|r| r.wall_s).sum(),
+        value,
+        packings: runs.len(),
+        spread,
+        outcome,
+    }
 }
 
 /// The reference the errors are taken against: the extrapolate where the levels converge
@@ -280,7 +353,9 @@ pub fn reference(r: &Report) -> (f64, &'static str) {
 pub fn tables(r: &Report) -> (Table, Table) {
     let (reference, against) = reference(r);
     let q = r.case.quantity();
-    let header: Vec<String> = ["level", "elements", "h_m", "steps", "dt_s", "element_steps", "wall_s", q, "error_rel", "error_against", "outcome"].iter().map(|s| s.to_string()).collect();
+    let sd = format!("{q}_sd");
+    let header: Vec<String> =
+        ["level", "elements", "h_m", "steps", "dt_s", "element_steps", "wall_s", q, "error_rel", "error_against", "outcome", "packings", sd.as_str()].iter().map(|s| s.to_string()).collect();
     let rows = r
         .levels
         .iter()
@@ -297,6 +372,8 @@ pub fn tables(r: &Report) -> (Table, Table) {
                 format!("{:.4e}", (l.value - reference) / reference),
                 against.to_string(),
                 l.outcome.clone(),
+                l.packings.to_string(),
+                l.spread.map_or(String::new(), |s| format!("{s:.4e}")),
             ]
         })
         .collect();
@@ -338,6 +415,8 @@ mod tests {
                 dt_s: 1e-6,
                 wall_s: 1.0 * 8f64.powi(k as i32),
                 value: values[k],
+                packings: 1,
+                spread: None,
                 outcome: outcomes[k].to_string(),
             })
             .collect()
@@ -353,6 +432,17 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    #[test]
+    fn a_level_over_packings_is_their_mean_with_its_sample_spread_and_each_outcome_counted() {
+        let run = |depth_in: f64, wall_s: f64, outcome: &str| PackingRun { elements: 100.0, steps: 10.0, dt_s: 1e-6, wall_s, depth_in, outcome: outcome.into() };
+        let l = over_packings(2, 0.5, &[run(4.0, 1.0, "held"), run(5.0, 2.0, "held"), run(6.0, 4.0, "scabbed")]);
+        assert_eq!((l.value, l.packings, l.wall_s), (5.0, 3, 7.0), "mean depth, count, the level's summed cost");
+        assert!((l.spread.unwrap() - 1.0).abs() < 1e-15, "sample standard deviation (n − 1)");
+        assert_eq!(l.outcome, "held ×2; scabbed ×1");
+        let one = over_packings(0, 1.0, &[run(4.5, 3.0, "held")]);
+        assert_eq!((one.value, one.spread, one.outcome.as_str()), (4.5, None, "held"), "one packing: the run itself");
     }
 
     #[test]

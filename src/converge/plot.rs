@@ -39,7 +39,7 @@ pub fn draw(path: &Path, r: &Report) -> Result<()> {
                 .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
             chart
                 .configure_mesh()
-                .x_desc("wall time, s (one run)")
+                .x_desc("wall time, s (the level's runs)")
                 .y_desc(format!("relative error against the {against}"))
                 .label_style(("sans-serif", 14))
                 .draw()?;
