@@ -41,6 +41,8 @@ pub fn draw(path: &Path, r: &Report) -> Result<()> {
                 .configure_mesh()
                 .x_desc("wall time, s (the level's runs)")
                 .y_desc(format!("relative error against the {against}"))
+                // Plotters' own labels on a log axis print 0.4 as 0.4000000004.
+                .y_label_formatter(&|v| if *v >= 0.01 { format!("{v:.2}") } else { format!("{v:.0e}") })
                 .label_style(("sans-serif", 14))
                 .draw()?;
             chart.draw_series(LineSeries::new(pts.iter().map(|p| (p.0, p.1)), BLUE.stroke_width(2)))?;
