@@ -24,6 +24,7 @@ fn concrete() -> Class {
         kn_pa: kn,
         ks_pa: ks,
         mu: 0.5,
+        contact_damping_ratio: 0.0,
         rolling: Some(rolling::Params { kr_pa: ks, eta: 0.2 }),
         twisting: Some(twisting::Params { kt_pa: 0.5 * ks, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
         rate: Default::default(),

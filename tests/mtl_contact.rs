@@ -24,6 +24,7 @@ fn class(rolling: Option<rolling::Params>, twisting: Option<twisting::Params>) -
         kn_pa: KN / R,
         ks_pa: KN / R,
         mu: 0.5,
+        contact_damping_ratio: 0.0,
         rolling,
         twisting,
         rate: Default::default(),
@@ -33,7 +34,7 @@ fn class(rolling: Option<rolling::Params>, twisting: Option<twisting::Params>) -
 
 /// Sphere j at +x, pressed into i by OVERLAP; i spins at `w_i`.
 fn pair(w_i: [f64; 3]) -> Pair {
-    Pair { r: [R, R], dx_m: [2.0 * R - OVERLAP, 0.0, 0.0], v: [[0.0; 3]; 2], w: [w_i, [0.0; 3]] }
+    Pair { r: [R, R], dx_m: [2.0 * R - OVERLAP, 0.0, 0.0], v: [[0.0; 3]; 2], w: [w_i, [0.0; 3]], m: [1.0, 1.0] }
 }
 
 #[test]

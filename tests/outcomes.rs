@@ -87,6 +87,11 @@ fn a_fragment_flying_off_the_back_is_a_scab_with_its_mass() {
     assert_eq!(l.scab.0, 1, "one scab fragment");
     assert!((l.scab.1 - mass).abs() <= 1e-12 * mass, "scab mass {} kg, lump {} kg", l.scab.1, mass);
     assert_eq!(l.spall.0, 0);
+    // On the slice the crater is the back face's width the lump took: the lump's elements
+    // within 3 in of the impact point, 6 in (less than an element's spread at either end).
+    let crater_in = l.back_crater_m / M_PER_IN;
+    assert!((crater_in - 6.0).abs() <= 1.0, "crater {crater_in} in across a 6 in lump");
+    assert!(l.scabs, "6 in is over the 3.5 in calibre");
     // In its place and moving up into the beam, it is not scabbing (past the back face it
     // would be, whatever its speed: it has left the target).
     for &e in &members {
@@ -207,6 +212,9 @@ fn look(t: f64, v: f64, attached_bonds: u64) -> Look {
         depth_m: 0.1,
         deflection_m: 0.0,
         scab: (0, 0.0),
+        back_crater_m: 0.0,
+        scabs: false,
+        far_bonds: 0,
         spall: (0, 0.0),
         through: false,
         clear: false,

@@ -203,3 +203,42 @@ fn a_projectile_through_a_hole_is_through_and_one_beside_the_slab_is_not_held_by
     }
     assert!(det.look(&m).through, "material beside its footprint does not hold it");
 }
+
+/// The back-face crater of a lump 30 mm square across the face (x, z): the diameter of the
+/// circle of its area, 2 √(900 mm² / π) = 33.9 mm, as the lump's spheres' shares of the face
+/// read it; one calibre (20 mm) and more, so a scab. One sphere flying off alone is a crater of
+/// about its own diameter (8 mm), under a calibre: a scab fragment, no scab.
+#[test]
+fn a_back_face_crater_is_the_area_its_scabs_took_and_one_sphere_is_no_scab() {
+    let (mut m, det, _) = small();
+    let target = m.body("target").unwrap();
+    let back = |e: usize| m.initial_m(e)[1] - m.radius_m(e) < 2.0 * R;
+    // One back-face sphere under the impact point, cut loose and flying off.
+    let one = target.clone().filter(|&e| back(e)).min_by(|&a, &b| {
+        let d = |e: usize| m.initial_m(e)[0].hypot(m.initial_m(e)[2]);
+        d(a).total_cmp(&d(b))
+    }).unwrap();
+    assert!(cut(&mut m, &|e| e == one) > 0);
+    m.state.vel_mps[one][1] = -10.0;
+    let l = det.look(&m);
+    println!("one sphere of radius {:.2} mm: crater {:.2} mm", 1e3 * m.radius_m(one), 1e3 * l.back_crater_m);
+    assert_eq!(l.scab.0, 1, "a scab fragment");
+    assert!(!l.scabs, "one sphere is no scab: crater {} m", l.back_crater_m);
+    assert!(l.back_crater_m > 1.0 * m.radius_m(one) && l.back_crater_m < 4.0 * m.radius_m(one), "crater {} m", l.back_crater_m);
+    let (mut m, det, _) = small();
+    let members: Vec<usize> = target.clone().filter(|&e| {
+        let p = m.initial_m(e);
+        p[1] < 0.015 && p[0].abs() < 0.015 && p[2].abs() < 0.015
+    }).collect();
+    let set: std::collections::HashSet<usize> = members.iter().copied().collect();
+    assert!(cut(&mut m, &|e| set.contains(&e)) > 0);
+    assert_eq!(det.look(&m).back_crater_m, 0.0, "a detached piece at rest takes no crater");
+    for &e in &members {
+        m.state.vel_mps[e][1] = -10.0;
+    }
+    let l = det.look(&m);
+    let want = 2.0 * (0.03f64 * 0.03 / std::f64::consts::PI).sqrt();
+    println!("lump 30 mm square: crater {:.2} mm against {:.2} mm", 1e3 * l.back_crater_m, 1e3 * want);
+    assert!(l.scabs, "a crater of {} m is over a calibre", l.back_crater_m);
+    assert!((l.back_crater_m / want - 1.0).abs() < 0.10, "crater {} m against {want} m", l.back_crater_m);
+}

@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use crate::error::{Error, Result};
 use crate::penetration::scene::PenetrationScene;
+use crate::penetration::history::History;
 use crate::penetration::{Finished, Hooks};
 use crate::run::{Checkpointing, RunCheckpoint};
 use crate::scene::overrides::Override;
@@ -42,6 +43,11 @@ pub struct Args {
     /// Simulated time between pictures, ms.
     #[arg(long, default_value_t = 0.25, value_name = "MS")]
     pub snapshot_every_ms: f64,
+    /// Penetration scenes: write `<out>/<scene name>/history.csv`, a record every MS of
+    /// simulated time (depth, speed and resistance of the projectile; kinetic energy and broken
+    /// bonds near the path and far from it; the energy ledger).
+    #[arg(long, value_name = "MS")]
+    pub history_every_ms: Option<f64>,
 }
 
 fn announce<M: Simulation>(name: &str, m: &M, steps: f64) {
@@ -96,24 +102,43 @@ fn penetrate<M: Simulation>(args: &Args, scene: PenetrationScene, run: impl FnOn
         Some(d) => Some(crate::picture::Series::new(d, &scene)?),
         None => None,
     };
-    let every_s = if pictures.is_some() { args.snapshot_every_ms * 1e-3 } else { 0.0 };
-    let mut started = false;
+    if let Some(ms) = args.history_every_ms
+        && !(ms.is_finite() && ms > 0.0)
+    {
+        return Err(Error::input("--history-every-ms", format!("must be a number > 0, got {ms}")));
+    }
+    let picture_s = if pictures.is_some() { args.snapshot_every_ms * 1e-3 } else { 0.0 };
+    // Records come at the finer of the two intervals; a picture at its own.
+    let every_s = match args.history_every_ms {
+        Some(ms) if picture_s > 0.0 => picture_s.min(ms * 1e-3),
+        Some(ms) => ms * 1e-3,
+        None => picture_s,
+    };
+    let mut history = args.history_every_ms.map(|_| History::default());
+    let (mut started, mut next_picture_s) = (false, 0.0);
     let mut frame = |m: &M| -> Result<()> {
         if !std::mem::replace(&mut started, true) {
             announce(&scene.penetration.name, m, (scene.penetration.max_time_s / m.dt_s()).ceil());
         }
         match pictures.as_mut() {
-            Some(p) => p.frame(m),
-            None => Ok(()),
+            // Half a step's slack: records fall on whole steps.
+            Some(p) if m.time_s() >= next_picture_s - 0.5 * m.dt_s() => {
+                next_picture_s = m.time_s() + picture_s;
+                p.frame(m)
+            }
+            _ => Ok(()),
         }
     };
-    let hooks = Hooks { each_record: Some(&mut frame), record_every_s: every_s, tick: Some(&mut tick), ..Default::default() };
+    let hooks = Hooks { each_record: Some(&mut frame), record_every_s: every_s, tick: Some(&mut tick), history: history.as_mut(), ..Default::default() };
     let finished = run(&scene, hooks);
     bar.finish_and_clear();
     let finished = finished?;
     if let Some(p) = pictures.as_mut() {
         let last = p.finish(&finished.model)?;
         eprintln!("{} frames; the last is {}", p.frames().len(), last.display());
+    }
+    if let Some(h) = &history {
+        Table::from_rows(&h.rows)?.write_csv(&dir.join("history.csv"))?;
     }
     let summary = Table::from_row(&finished.row)?;
     summary.write_csv(&dir.join("summary.csv"))?;

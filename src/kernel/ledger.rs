@@ -69,6 +69,10 @@ pub struct Ledger<D> {
     /// Local (non-viscous) damping of the element motion, J (3D kernel, `kernel3d::integrate`).
     #[serde(default)]
     pub local_damping_j: f64,
+    /// Energy carried out of the model by its viscous (absorbing) boundaries, J (3D kernel,
+    /// `kernel3d::integrate`): waves that leave, booked with what was dissipated.
+    #[serde(default)]
+    pub radiated_j: f64,
     /// What the contacts dissipated, by mechanism, and the bonds broken.
     pub contacts: D,
 }
@@ -76,7 +80,7 @@ pub struct Ledger<D> {
 impl<D: Mechanisms> Ledger<D> {
     /// Everything dissipated, J.
     pub fn dissipated_j(&self) -> f64 {
-        self.mass_damping_j + self.local_damping_j + self.contacts.total_j()
+        self.mass_damping_j + self.local_damping_j + self.radiated_j + self.contacts.total_j()
     }
 
     /// Balance error given the present kinetic and strain energy, J (0 for a perfect ledger).

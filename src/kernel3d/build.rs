@@ -90,6 +90,14 @@ impl Builder {
         self.spheres.prescribed_mps[e] = velocity_mps;
     }
 
+    /// Tie sphere e to what lies beyond the model by a dashpot of `c_kg_per_s` along x, y, z
+    /// (added to any it has: a sphere at a corner sits on two faces).
+    pub fn dashpot(&mut self, e: usize, c_kg_per_s: V3) {
+        let s = &mut self.spheres;
+        s.dashpot_kg_per_s.resize(s.len(), [0.0; 3]);
+        s.dashpot_kg_per_s[e] = [0, 1, 2].map(|k| s.dashpot_kg_per_s[e][k] + c_kg_per_s[k]);
+    }
+
     /// A constant force (N) and moment (N·m) on sphere e.
     pub fn load(&mut self, e: usize, force_n: V3, moment_nm: V3) {
         self.spheres.load_n[e] = force_n;
@@ -127,6 +135,9 @@ impl Builder {
         let mut s = self.spheres;
         if !s.local_damping.is_empty() {
             s.local_damping.resize(s.len(), 0.0);
+        }
+        if !s.dashpot_kg_per_s.is_empty() {
+            s.dashpot_kg_per_s.resize(s.len(), [0.0; 3]);
         }
         if let Some(e) = (0..s.len()).find(|&e| !(s.radius_m[e] > 0.0 && s.mass_kg[e] > 0.0 && s.initial_m[e].iter().all(|x| x.is_finite()))) {
             return Err(Error::input("sphere", format!("sphere {e}: radius {} m, mass {} kg, centre {:?} m", s.radius_m[e], s.mass_kg[e], s.initial_m[e])));
@@ -204,7 +215,10 @@ impl Builder {
             return Err(Error::input("class", format!("the contacts give no finite frequency bound ({omega} rad/s): no free sphere in a contact?")));
         }
         model.omega_bound_rad_per_s = omega;
-        model.dt_bound_s = 2.0 / omega;
+        // A restitution dashpot on the lagged velocity costs the stable step the factor
+        // √(1 + ζ²) − ζ (`kernel::stability::critical_step_s`), at the largest ζ of any class.
+        let zeta = model.classes.iter().map(|c| c.contact_damping_ratio).fold(0.0, f64::max);
+        model.dt_bound_s = crate::kernel::stability::critical_step_s(omega, zeta);
         model.motion.dt_s = self.dt_s.unwrap_or(self.safety * model.dt_bound_s);
         let dt = model.motion.dt_s;
         model.classes.iter_mut().for_each(|c| c.rate.set_time_step(dt));

@@ -36,7 +36,7 @@ impl Bodies for Model {
         self.spheres.mass_kg[e]
     }
     fn held(&self, e: usize) -> bool {
-        self.spheres.held[e]
+        self.spheres.anchored(e)
     }
     fn each_bond(&self, f: &mut dyn FnMut(usize, usize)) {
         for c in self.state.contacts.iter().filter(|c| c.bond == Bond::Intact) {
@@ -89,10 +89,12 @@ impl Simulation for Model {
         // The energies at the last whole step, second order in Δt (`kernel3d::energy`).
         let w = self.whole_step();
         let (ke, se) = (w.kinetic_j, w.strain_j);
-        let dissipated_j = w.mass_damping_j + w.local_damping_j + l.contacts.total_j();
-        // Local damping (3D only) is listed after the contacts' mechanisms.
+        let dissipated_j = w.mass_damping_j + w.local_damping_j + w.radiated_j + l.contacts.total_j();
+        // Local damping and what the boundary let out (3D only) are listed after the contacts'
+        // mechanisms.
         let mut by_mechanism: Vec<(String, f64)> = l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect();
         by_mechanism.push(("local_damping_j".to_string(), w.local_damping_j));
+        by_mechanism.push(("radiated_j".to_string(), w.radiated_j));
         Tally {
             elements: self.spheres.len() as u64,
             bonds_broken: l.bonds_broken(),

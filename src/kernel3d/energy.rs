@@ -24,6 +24,8 @@ pub struct WholeStep {
     pub mass_damping_j: f64,
     /// Local damping up to that step, J.
     pub local_damping_j: f64,
+    /// Carried out through the viscous boundary up to that step, J.
+    pub radiated_j: f64,
 }
 
 impl Model {
@@ -33,13 +35,13 @@ impl Model {
         let l = &st.ledger;
         if st.steps == 0 || st.force_n.len() != sp.len() {
             let (kinetic_j, strain_j) = (self.kinetic_energy_j(), self.strain_energy_j());
-            return WholeStep { kinetic_j, strain_j, external_j: l.external_j, mass_damping_j: l.mass_damping_j, local_damping_j: l.local_damping_j };
+            return WholeStep { kinetic_j, strain_j, external_j: l.external_j, mass_damping_j: l.mass_damping_j, local_damping_j: l.local_damping_j, radiated_j: l.radiated_j };
         }
         // The update's constants (integrate::update): v⁺ = c1 v⁻ + c2 a.
         let half = 0.5 * p.alpha_per_s * p.dt_s;
         let (c1, c2) = ((1.0 - half) / (1.0 + half), p.dt_s / (1.0 + half));
         let undo = |v: V3, a: V3| scale(1.0 / c1, sub(v, scale(c2, a)));
-        let (mut kinetic_j, mut external_last_j, mut damping_last_j, mut local_last_j) = (0.0, 0.0, 0.0, 0.0);
+        let (mut kinetic_j, mut external_last_j, mut damping_last_j, mut local_last_j, mut radiated_last_j) = (0.0, 0.0, 0.0, 0.0, 0.0);
         let mut before = Vec::with_capacity(sp.len());
         for e in 0..sp.len() {
             let (v, w, f) = (st.vel_mps[e], st.spin_rad_per_s[e], st.force_n[e]);
@@ -60,12 +62,14 @@ impl Model {
                 f = integrate::local(f, integrate::whole_step_velocity(v, scale(-1.0, a), p), lambda);
                 t = integrate::local(t, integrate::whole_step_velocity(w, scale(-1.0, b), p), lambda);
             }
-            let v_old = undo(v, scale(1.0 / m, f));
+            let c = scale(1.0 / m, sp.dashpot_of(e));
+            let v_old = if c == [0.0; 3] { undo(v, scale(1.0 / m, f)) } else { integrate::before_dashpot(v, scale(1.0 / m, f), p, c) };
             let w_old = undo(w, scale(1.0 / i, t));
             let (v_mid, w_mid) = (scale(0.5, add(v, v_old)), scale(0.5, add(w, w_old)));
             local_last_j -= (dot(sub(f, f_in), v_mid) + dot(sub(t, t_in), w_mid)) * p.dt_s;
             kinetic_j += 0.5 * m * dot(v_mid, v_mid) + 0.5 * i * dot(w_mid, w_mid);
             damping_last_j += p.alpha_per_s * (m * dot(v_mid, v_mid) + i * dot(w_mid, w_mid)) * p.dt_s;
+            radiated_last_j += m * (c[0] * v_mid[0] * v_mid[0] + c[1] * v_mid[1] * v_mid[1] + c[2] * v_mid[2] * v_mid[2]) * p.dt_s;
             external_last_j += (dot(sp.load_n[e], v_mid) + dot(sp.load_nm[e], w_mid)) * p.dt_s;
         }
         WholeStep {
@@ -74,6 +78,7 @@ impl Model {
             external_j: l.external_j - 0.5 * external_last_j,
             mass_damping_j: l.mass_damping_j - 0.5 * damping_last_j,
             local_damping_j: l.local_damping_j - 0.5 * local_last_j,
+            radiated_j: l.radiated_j - 0.5 * radiated_last_j,
         }
     }
 

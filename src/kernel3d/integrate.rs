@@ -1,6 +1,8 @@
 //! Element motion: central differences for the centres and the spins, with mass-proportional
-//! damping α centred in time (explicit, no stability cost), as the 2D kernel's update, and
-//! local damping λ per sphere (`local`, a material's own damping). A
+//! damping α centred in time (explicit, no stability cost), as the 2D kernel's update, local
+//! damping λ per sphere (`local`, a material's own damping), and a viscous boundary: dashpots
+//! from boundary spheres to what lies beyond the model, centred in time as α is (`with_dashpot`).
+//! A
 //! sphere's inertia is the same about every axis, so its spin needs no gyroscopic term and no
 //! orientation: the laws are incremental.
 
@@ -25,6 +27,31 @@ fn update(v: V3, accel: V3, p: &Params) -> (V3, f64) {
     let new = add(scale(c1, v), scale(c2, accel));
     let mid = scale(0.5, add(new, v));
     (new, p.alpha_per_s * dot(mid, mid) * p.dt_s)
+}
+
+/// [`update`] for a sphere on a dashpot to the ground of `c_per_s` = c/m (1/s) along x, y, z on
+/// top of α: each axis damped at its own rate, centred in time (unconditionally stable). Returns
+/// the new velocity, the mass damping's work per unit mass and the dashpot's. Lysmer &
+/// Kuhlemeyer (1969): a dashpot ρ c_p A normal to a face and ρ c_s A across it takes a plane
+/// wave arriving square to the face out of the model whole, at every frequency.
+#[inline(always)]
+fn with_dashpot(v: V3, accel: V3, p: &Params, c_per_s: V3) -> (V3, f64, f64) {
+    let new: V3 = [0, 1, 2].map(|k| {
+        let half = 0.5 * (p.alpha_per_s + c_per_s[k]) * p.dt_s;
+        (1.0 - half) / (1.0 + half) * v[k] + p.dt_s / (1.0 + half) * accel[k]
+    });
+    let mid = scale(0.5, add(new, v));
+    let radiated = (c_per_s[0] * mid[0] * mid[0] + c_per_s[1] * mid[1] * mid[1] + c_per_s[2] * mid[2] * mid[2]) * p.dt_s;
+    (new, p.alpha_per_s * dot(mid, mid) * p.dt_s, radiated)
+}
+
+/// [`with_dashpot`] undone: the half-step velocity before an update that gave `v` from `accel`.
+#[inline(always)]
+pub fn before_dashpot(v: V3, accel: V3, p: &Params, c_per_s: V3) -> V3 {
+    [0, 1, 2].map(|k| {
+        let half = 0.5 * (p.alpha_per_s + c_per_s[k]) * p.dt_s;
+        (v[k] - p.dt_s / (1.0 + half) * accel[k]) * (1.0 + half) / (1.0 - half)
+    })
 }
 
 /// Local (non-viscous) damping of a force (or moment) `f` on a sphere moving at `v`: each
@@ -54,6 +81,8 @@ pub struct Report {
     pub mass_damping_j: f64,
     /// Local damping, J.
     pub local_damping_j: f64,
+    /// Carried out through the dashpots of a viscous boundary, J.
+    pub radiated_j: f64,
     /// Work of loads and prescribed motions, J.
     pub external_j: f64,
     /// The first sphere that came into the step non-finite.
@@ -80,12 +109,19 @@ pub struct Rows<'a> {
 
 /// Advance a chunk of spheres one step from their contact force and moment sums.
 pub fn advance(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
-    // A model that damps no sphere locally gets a loop without the damping's test per sphere.
-    if s.local_damping.is_empty() { advance_as::<false>(s, rows, p) } else { advance_as::<true>(s, rows, p) }
+    // A model that damps no sphere locally, or has no dashpot, gets a loop without that test
+    // per sphere.
+    match (s.local_damping.is_empty(), s.dashpot_kg_per_s.is_empty()) {
+        (true, true) => advance_as::<false, false>(s, rows, p),
+        (false, true) => advance_as::<true, false>(s, rows, p),
+        (true, false) => advance_as::<false, true>(s, rows, p),
+        (false, false) => advance_as::<true, true>(s, rows, p),
+    }
 }
 
-/// [`advance`], with local damping read per sphere (`LOCAL`) or absent.
-fn advance_as<const LOCAL: bool>(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
+/// [`advance`], with local damping read per sphere (`LOCAL`) or absent, and dashpots
+/// (`DASHPOT`) or none.
+fn advance_as<const LOCAL: bool, const DASHPOT: bool>(s: &Spheres, rows: Rows<'_>, p: &Params) -> Report {
     let Rows { base, pos, vel, spin, force, moment } = rows;
     let mut r = Report::default();
     // x·0 is 0 for every finite x and NaN for ±∞ and NaN: one sum tells, with no branch per value.
@@ -111,7 +147,14 @@ fn advance_as<const LOCAL: bool>(s: &Spheres, rows: Rows<'_>, p: &Params) -> Rep
                 f = local(f, whole_step_velocity(vel[k], scale(1.0 / m, f), p), lambda);
                 t = local(t, whole_step_velocity(spin[k], scale(1.0 / i, t), p), lambda);
             }
-            let (v, damped) = update(vel[k], scale(1.0 / m, f), p);
+            let c = if DASHPOT { s.dashpot_kg_per_s[e] } else { [0.0; 3] };
+            let (v, damped) = if DASHPOT && c != [0.0; 3] {
+                let (v, damped, radiated) = with_dashpot(vel[k], scale(1.0 / m, f), p, scale(1.0 / m, c));
+                r.radiated_j += m * radiated;
+                (v, damped)
+            } else {
+                update(vel[k], scale(1.0 / m, f), p)
+            };
             let (w, damped_w) = update(spin[k], scale(1.0 / i, t), p);
             r.mass_damping_j += m * damped + i * damped_w;
             if LOCAL && lambda > 0.0 {

@@ -96,7 +96,8 @@ impl View<'_> {
     fn act(&self, c: &mut Contact, diss: &mut Dissipation) -> law::Action {
         let (i, j) = (c.i as usize, c.j as usize);
         let (r, pos) = (&self.sp.radius_m, self.pos);
-        let pair = Pair { r: [r[i], r[j]], dx_m: sub(pos[j], pos[i]), v: [self.vel[i], self.vel[j]], w: [self.spin[i], self.spin[j]] };
+        let m = &self.sp.mass_kg;
+        let pair = Pair { r: [r[i], r[j]], dx_m: sub(pos[j], pos[i]), v: [self.vel[i], self.vel[j]], w: [self.spin[i], self.spin[j]], m: [m[i], m[j]] };
         let class = &self.classes[c.class as usize];
         let here;
         let k = match self.locals.get(c.class as usize) {
@@ -241,6 +242,7 @@ impl Model {
         for r in reports.iter() {
             st.ledger.mass_damping_j += r.mass_damping_j;
             st.ledger.local_damping_j += r.local_damping_j;
+            st.ledger.radiated_j += r.radiated_j;
             st.ledger.external_j += r.external_j;
             bad = (bad.0.or(r.bad_in), bad.1.or(r.bad_out));
         }

@@ -19,7 +19,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::law::{Class, Compaction, rolling, twisting};
+use super::law::{Class, Compaction, restitution_damping_ratio, rolling, twisting};
 use super::stiffness;
 use crate::error::{Error, Result};
 use crate::kernel::law::friction::series;
@@ -69,6 +69,11 @@ pub struct Solid {
     /// Compaction of the bonds in compression (seed 000 eq 6.11; off when absent).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub compaction: Option<CompactionSpec>,
+    /// Coefficient of restitution e of its frictional (unbonded) contacts: two fragments meeting
+    /// head-on part at e times their approach speed (a normal dashpot, `law`). Absent: elastic
+    /// (e = 1).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
 }
 
 /// What a class's rate part needs of the scene: the fastest speed in it and the mean radius of
@@ -151,6 +156,11 @@ impl Solid {
             c.validate(&format!("{prefix}.compaction"))?;
             check("compressive_strength_pa", self.compressive_strength_pa, false)?;
         }
+        if let Some(e) = self.restitution
+            && !(e > 0.0 && e <= 1.0)
+        {
+            return Err(Error::input(format!("{prefix}.restitution"), format!("must lie in (0, 1], got {e}")));
+        }
         Ok(())
     }
 
@@ -185,6 +195,7 @@ impl Solid {
             kn_pa: kappa,
             ks_pa: ks,
             mu: self.friction_coefficient,
+            contact_damping_ratio: self.restitution.map_or(0.0, restitution_damping_ratio),
             rolling: self.rolling.map(|r| rolling::Params { kr_pa: ks, eta: r.eta }),
             twisting: self.twisting.map(|t| twisting::Params {
                 kt_pa: 0.5 * ks,
@@ -234,6 +245,8 @@ pub fn between((sa, a): (&Solid, &Class), (sb, b): (&Solid, &Class), ctx: RateCo
         kn_pa: series(a.kn_pa, b.kn_pa),
         ks_pa: series(a.ks_pa, b.ks_pa),
         mu: 0.5 * (a.mu + b.mu),
+        // The less elastic of the two (a fragment is no bouncier on steel than on itself).
+        contact_damping_ratio: a.contact_damping_ratio.max(b.contact_damping_ratio),
         rolling: match (a.rolling, b.rolling) {
             (Some(x), Some(y)) => Some(rolling::Params { kr_pa: series(x.kr_pa, y.kr_pa), eta: x.eta.min(y.eta) }),
             _ => None,

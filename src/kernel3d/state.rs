@@ -31,6 +31,11 @@ pub struct Spheres {
     /// undamped one; empty when the model damps none (the step then never reads it).
     #[serde(default)]
     pub local_damping: Vec<f64>,
+    /// Viscous boundary: the coefficient of each sphere's dashpot to what lies beyond the model
+    /// along x, y and z, kg/s (`integrate`; Lysmer & Kuhlemeyer's ρ c A); empty when no sphere
+    /// has one (the step then never reads it).
+    #[serde(default)]
+    pub dashpot_kg_per_s: Vec<V3>,
 }
 
 impl Spheres {
@@ -47,6 +52,17 @@ impl Spheres {
     /// Sphere e's local damping coefficient λ (0 where the model damps none).
     pub fn local_damping_of(&self, e: usize) -> f64 {
         self.local_damping.get(e).copied().unwrap_or(0.0)
+    }
+
+    /// Sphere e's dashpot coefficients along x, y, z, kg/s (zero where it has none).
+    pub fn dashpot_of(&self, e: usize) -> V3 {
+        self.dashpot_kg_per_s.get(e).copied().unwrap_or([0.0; 3])
+    }
+
+    /// Sphere e ends on what lies beyond the model: held, or on a dashpot to it (a support for
+    /// the outcome's fragments).
+    pub fn anchored(&self, e: usize) -> bool {
+        self.held[e] || self.dashpot_of(e) != [0.0; 3]
     }
 }
 

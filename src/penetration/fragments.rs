@@ -52,7 +52,7 @@ pub struct Fragment {
     pub momentum: [f64; 3],
     /// Mass-weighted centre [x, y, z], kg·m (divide by the mass).
     pub moment: [f64; 3],
-    /// Holds an element of a support (a fully prescribed one).
+    /// Holds an element of a support (held, or tied to what lies beyond by a boundary dashpot).
     pub supported: bool,
     /// Holds an element that started on the back face.
     pub back: bool,

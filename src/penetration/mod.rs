@@ -5,9 +5,11 @@
 //! * [`run`](mod@run): the kernel run with the outcome detector as its stop rule, reported as
 //!   one typed row;
 //! * [`outcome`] and [`fragments`]: what the run did to the target (depth, scabbing,
-//!   perforation, spall) and when it is settled, from positions and bonds.
+//!   perforation, spall) and when it is settled, from positions and bonds; [`history`], the
+//!   same and the energies, near the path and far from it, against time.
 
 pub mod fragments;
+pub mod history;
 pub mod outcome;
 pub mod run;
 pub mod scene;

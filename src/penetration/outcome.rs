@@ -11,16 +11,22 @@
 //!   largest over the run: what a crater gauge on a bending beam would read.
 //! * **fragment**: a connected set of target elements over intact bonds (a union-find), or a
 //!   single element, that holds no supported element.
-//! * **scabbing**: material lost from the back face. A scab fragment is a fragment holding
-//!   back-face material (elements that started within one element diameter of the back face)
-//!   moving away from the back face, i.e. downward faster than the attached back face beside it
-//!   (within one projectile width) by more than `separation_fps`; or any fragment whose centre
-//!   has passed the original back face (material that left through it, ahead of or with the
-//!   projectile, whatever its speed). A perforation holes the back face, so a perforated run is
-//!   a scabbed run too, from its first look through at the latest, even when nothing came
-//!   loose (a beam split in two under the projectile): in any sweep the first scabbing is at or
-//!   below the first perforation. Reported: the number of scab fragments, their mass, and the
-//!   first time the back face lost material.
+//! * **scabbing**: a crater in the back face, at least `scab_crater_calibres` projectile widths
+//!   across. A scab fragment is a fragment holding back-face material (elements that started
+//!   within one element diameter of the back face) moving away from the back face, i.e.
+//!   downward faster than the attached back face beside it (within one projectile width) by
+//!   more than `separation_fps`; or any fragment whose centre has passed the original back face
+//!   (material that left through it, ahead of or with the projectile, whatever its speed). The
+//!   **back-face crater** is the part of the back face the scab fragments took: each back-face
+//!   element carries its share of the face's area in proportion to its section (r² in 3D; in
+//!   the 2D slice, its share of the face's width in proportion to r), and the crater's diameter
+//!   is that of the circle of the area taken (in 2D, the width taken). A single element is then
+//!   a crater of about its own diameter, never a scab while elements are finer than the
+//!   calibre, at any level. A perforation holes the back face, so a perforated run is a scabbed
+//!   run too, from its first look through at the latest, even when nothing came loose (a beam
+//!   split in two under the projectile): in any sweep the first scabbing is at or below the
+//!   first perforation. Reported: the crater's largest diameter, the number of scab fragments
+//!   and their mass at the end, and the first time the back face scabbed.
 //! * **front-face spall (crater)**: the same for front-face material moving up, away from the
 //!   front face.
 //! * **perforation**: the projectile's rearmost point below the original back face and below
@@ -66,13 +72,18 @@ pub struct Outcome {
     pub depth_rel_in: f64,
     /// When the peak depth was reached, s.
     pub depth_time_s: f64,
-    /// The back face lost material: scab fragments seen, or the projectile went through.
+    /// The back face scabbed: its crater reached `outcome.scab_crater_calibres` projectile
+    /// widths across, or the projectile went through.
     pub scabbed: bool,
+    /// The back-face crater's diameter at its largest, in: the diameter of the circle of the
+    /// back face's area that its scab fragments took (in 2D, the width of the slice's back
+    /// face they took).
+    pub back_crater_in: f64,
     /// The scab fragments' mass at the end, lb (per the mapping's slice).
     pub scab_mass_lb: f64,
     /// Their number at the end.
     pub scab_fragments: u64,
-    /// First time the back face lost material (a scab fragment or the perforation), s
+    /// First time the back face scabbed (its crater at the threshold, or the perforation), s
     /// (empty: never).
     pub scab_time_s: Option<f64>,
     /// The projectile went through.
@@ -89,7 +100,14 @@ pub struct Outcome {
     pub spall_fragments: u64,
     /// First time spall was seen, s.
     pub spall_time_s: Option<f64>,
+    /// Share of the target's bonds lying beyond [`FAR_CALIBRES`] projectile widths of the
+    /// impact axis that broke (their midpoints' distance at the start).
+    pub far_bonds_broken_fraction: f64,
 }
+
+/// Where "far from the path" begins, in projectile widths from the impact axis: a wall's
+/// damage should stay within a crater, a tunnel and a scab cone.
+pub const FAR_CALIBRES: f64 = 4.0;
 
 /// What the detector keeps between looks (it travels in checkpoints).
 #[derive(Debug, Clone, Copy, PartialEq, Default, Serialize, Deserialize)]
@@ -102,6 +120,9 @@ pub struct Tracking {
     pub depth_rel_m: f64,
     /// First scab, s.
     pub scab_time_s: Option<f64>,
+    /// The back-face crater's largest diameter so far, m.
+    #[serde(default)]
+    pub back_crater_m: f64,
     /// First spall, s.
     pub spall_time_s: Option<f64>,
     /// First perforation, s.
@@ -131,6 +152,12 @@ pub struct Look {
     pub deflection_m: f64,
     /// Scab fragments, their mass (kg).
     pub scab: (u64, f64),
+    /// The back-face crater's diameter, m (`Outcome::back_crater_in`).
+    pub back_crater_m: f64,
+    /// ... and it is wide enough to be a scab (`OutcomeSpec::scab_crater_calibres`).
+    pub scabs: bool,
+    /// Intact target bonds beyond `FAR_CALIBRES` of the axis.
+    pub far_bonds: u64,
     /// Spall fragments, their mass (kg).
     pub spall: (u64, f64),
     /// The projectile is wholly past the back face.
@@ -155,7 +182,8 @@ impl Tracking {
             self.depth_time_s = l.time_s;
         }
         self.depth_rel_m = self.depth_rel_m.max(l.depth_m - l.deflection_m);
-        if l.scab.0 > 0 && self.scab_time_s.is_none() {
+        self.back_crater_m = self.back_crater_m.max(l.back_crater_m);
+        if l.scabs && self.scab_time_s.is_none() {
             self.scab_time_s = Some(l.time_s);
         }
         if l.spall.0 > 0 && self.spall_time_s.is_none() {
@@ -234,6 +262,14 @@ pub struct Detector {
     faces: Vec<(bool, bool)>,
     /// Target elements of the back face under the impact point.
     under: Vec<usize>,
+    /// Per target element, its share of the back face's area (m²; in 2D, of its width, m):
+    /// the face's extent in proportion to its section r² (in 2D, r) among the elements that
+    /// started on it; 0 off the back face.
+    back_share: Vec<f64>,
+    /// Target bonds at the start beyond `FAR_CALIBRES` of the impact axis.
+    far_bonds_initial: u64,
+    /// The model is a 2D slice (its back face a line).
+    slice: bool,
     /// The evolving record.
     pub tracking: Tracking,
 }
@@ -251,7 +287,57 @@ impl Detector {
         // Within half a projectile width of the impact point across the face (in 2D, z = 0).
         let across = |p: [f64; 3]| (p[0] - layout.impact_x_m).hypot(p[2] - layout.impact_z_m);
         let under = target.clone().filter(|&e| faces[e - target.start].0 && across(model.initial_m(e)) <= 0.5 * layout.projectile_width_m).collect();
-        Ok(Detector { layout, spec, target, projectile, faces, under, tracking: Tracking::default() })
+        // The back face's extent across x (and z in 3D), and each of its elements' share.
+        // A 2D model (a slice) has every element at z = 0; a 3D packing never does.
+        let slice = target.clone().all(|e| model.initial_m(e)[2] == 0.0);
+        let on_back: Vec<usize> = target.clone().filter(|&e| faces[e - target.start].0).collect();
+        let extent = |k: usize| {
+            let lo = on_back.iter().map(|&e| model.initial_m(e)[k] - model.radius_m(e)).fold(f64::INFINITY, f64::min);
+            let hi = on_back.iter().map(|&e| model.initial_m(e)[k] + model.radius_m(e)).fold(f64::NEG_INFINITY, f64::max);
+            (hi - lo).max(0.0)
+        };
+        let (size, weight): (f64, fn(f64) -> f64) = if slice { (extent(0), |r| r) } else { (extent(0) * extent(2), |r| r * r) };
+        let total: f64 = on_back.iter().map(|&e| weight(model.radius_m(e))).sum();
+        let mut back_share = vec![0.0; target.len()];
+        for &e in &on_back {
+            back_share[e - target.start] = size * weight(model.radius_m(e)) / total;
+        }
+        let mut detector = Detector { layout, spec, target, projectile, faces, under, back_share, far_bonds_initial: 0, slice, tracking: Tracking::default() };
+        detector.far_bonds_initial = detector.far_bonds(model);
+        Ok(detector)
+    }
+
+    /// The target's elements.
+    pub fn target(&self) -> Range<usize> {
+        self.target.clone()
+    }
+
+    /// The projectile's elements.
+    pub fn projectile(&self) -> Range<usize> {
+        self.projectile.clone()
+    }
+
+    /// Distance of a point from the impact axis (the line through the impact point along the
+    /// projectile's path), m.
+    pub fn from_axis_m(&self, p: [f64; 3]) -> f64 {
+        let lay = &self.layout;
+        let d = [p[0] - lay.impact_x_m, p[1] - lay.front_y_m, p[2] - lay.impact_z_m];
+        let along = d[0] * lay.axis[0] + d[1] * lay.axis[1] + d[2] * lay.axis[2];
+        let off = [d[0] - along * lay.axis[0], d[1] - along * lay.axis[1], d[2] - along * lay.axis[2]];
+        (off[0] * off[0] + off[1] * off[1] + off[2] * off[2]).sqrt()
+    }
+
+    /// Intact target bonds whose midpoints started beyond `FAR_CALIBRES` of the impact axis.
+    fn far_bonds(&self, m: &(impl Bodies + ?Sized)) -> u64 {
+        let far = FAR_CALIBRES * self.layout.projectile_width_m;
+        let mut n = 0;
+        m.each_bond(&mut |i, j| {
+            if self.target.contains(&i) && self.target.contains(&j) {
+                let (a, b) = (m.initial_m(i), m.initial_m(j));
+                n += u64::from(self.from_axis_m([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]) > far);
+            }
+        });
+        n
     }
 
     /// Look at the model.
@@ -309,15 +395,20 @@ impl Detector {
             if n == 0 { 0.0 } else { s / n as f64 }
         };
         let (mut scab, mut spall) = ((0u64, 0.0), (0u64, 0.0));
-        for f in frags.iter().filter(|f| !f.supported) {
+        let mut is_scab = vec![false; frags.len()];
+        for (k, f) in frags.iter().enumerate().filter(|(_, f)| !f.supported) {
             let (vy, x) = (f.velocity_mps()[1], f.centre_m());
             let left_through_back = f.centre_m()[1] < lay.back_y_m;
             if (f.back && vy < face_speed(x, true) - sep) || left_through_back {
                 scab = (scab.0 + 1, scab.1 + f.mass_kg);
+                is_scab[k] = true;
             } else if f.front && vy > face_speed(x, false) + sep {
                 spall = (spall.0 + 1, spall.1 + f.mass_kg);
             }
         }
+        // The back face's area (2D: width) its scab fragments took, as a crater's diameter.
+        let lost: f64 = self.target.clone().filter(|&e| is_scab[of[e - self.target.start] as usize]).map(|e| self.back_share[e - self.target.start]).sum();
+        let back_crater_m = if self.slice { lost } else { 2.0 * (lost / std::f64::consts::PI).sqrt() };
         let mut attached_bonds = 0u64;
         m.each_bond(&mut |i, _| attached_bonds += u64::from(self.target.contains(&i) && attached(i)));
         // Wholly past the back face: below it and below any attached material under it.
@@ -333,6 +424,9 @@ impl Detector {
             depth_m: lay.front_y_m - lowest,
             deflection_m: deflection,
             scab,
+            back_crater_m,
+            scabs: back_crater_m >= self.spec.scab_crater_calibres * lay.projectile_width_m,
+            far_bonds: self.far_bonds(m),
             spall,
             through: rear < local,
             clear: rear < local - 2.0 * 2.0 * lay.concrete_radius_m,
@@ -351,10 +445,11 @@ impl Detector {
             depth_in: t.depth_m.max(l.depth_m) / M_PER_IN,
             depth_rel_in: t.depth_rel_m.max(l.depth_m - l.deflection_m) / M_PER_IN,
             depth_time_s: if l.depth_m > t.depth_m { l.time_s } else { t.depth_time_s },
-            scabbed: t.scab_time_s.is_some() || l.scab.0 > 0 || l.through,
+            scabbed: t.scab_time_s.is_some() || l.scabs || l.through,
+            back_crater_in: t.back_crater_m.max(l.back_crater_m) / M_PER_IN,
             scab_mass_lb: kg_to_lb(l.scab.1),
             scab_fragments: l.scab.0,
-            scab_time_s: t.scab_time_s.or((l.scab.0 > 0 || l.through).then_some(l.time_s)),
+            scab_time_s: t.scab_time_s.or((l.scabs || l.through).then_some(l.time_s)),
             perforated: t.perforation_time_s.is_some() || l.through,
             v_residual_fps: mps_to_fps(if t.perforation_time_s.is_some() { t.v_residual_mps } else if l.through { l.speed_mps } else { 0.0 }),
             perforation_time_s: t.perforation_time_s.or(l.through.then_some(l.time_s)),
@@ -362,6 +457,7 @@ impl Detector {
             spall_mass_lb: kg_to_lb(l.spall.1),
             spall_fragments: l.spall.0,
             spall_time_s: t.spall_time_s.or((l.spall.0 > 0).then_some(l.time_s)),
+            far_bonds_broken_fraction: if self.far_bonds_initial == 0 { 0.0 } else { 1.0 - l.far_bonds as f64 / self.far_bonds_initial as f64 },
         }
     }
 }

@@ -9,6 +9,7 @@ use serde::Serialize;
 use crate::penetration::scene::PenetrationScene;
 use crate::error::Result;
 use crate::kernel::Model;
+use crate::penetration::history::History;
 use crate::penetration::outcome::{Detector, Outcome};
 use crate::penetration::scene::Layout;
 use crate::run::{self, RunSummary};
@@ -58,11 +59,13 @@ pub struct Hooks<'a, M> {
     pub record_every_s: f64,
     /// Progress, the fraction of the time cap done.
     pub tick: Option<&'a mut dyn FnMut(f64)>,
+    /// Where to keep the run's history, a record at every record time (`history`).
+    pub history: Option<&'a mut History>,
 }
 
 impl<M> Default for Hooks<'_, M> {
     fn default() -> Self {
-        Hooks { threading: Threading::default(), lend: None, each_record: None, record_every_s: 0.0, tick: None }
+        Hooks { threading: Threading::default(), lend: None, each_record: None, record_every_s: 0.0, tick: None, history: None }
     }
 }
 
@@ -91,13 +94,26 @@ pub fn row(scene: &PenetrationScene, threading: Threading, lend: Option<&dyn run
 pub fn run_on<M: Simulation>(scene: &PenetrationScene, mut built: Built<M>, layout: Layout, hooks: Hooks<'_, M>) -> Result<Finished<M>> {
     built.every_steps = if hooks.record_every_s > 0.0 { ((hooks.record_every_s / built.model.dt_s()).round() as u64).max(1) } else { u64::MAX };
     let mut detector = Detector::new(&built.model, layout.clone(), scene.outcome.clone())?;
-    let (mut on, mut tick) = (hooks.each_record, hooks.tick);
-    if let Some(f) = on.as_mut() {
-        f(&built.model)?;
+    let (mut on, mut tick, mut history) = (hooks.each_record, hooks.tick, hooks.history);
+    // The history reads the model as the detector does (its own copy: the detector is the
+    // run's stop rule meanwhile).
+    let geometry = history.is_some().then(|| detector.clone());
+    let recording = on.is_some() || geometry.is_some();
+    let mut record = |m: &M| -> Result<()> {
+        if let (Some(h), Some(g)) = (history.as_deref_mut(), &geometry) {
+            h.record(m, g);
+        }
+        match on.as_mut() {
+            Some(f) => f(m),
+            None => Ok(()),
+        }
+    };
+    if recording {
+        record(&built.model)?;
     }
     let result = {
         // Reborrowed for the run (the callbacks' trait objects shortened to the run's borrow).
-        let observe = on.as_mut().map(|f| &mut **f as run::Observer<'_, M>);
+        let observe = recording.then_some(&mut record as run::Observer<'_, M>);
         let tick = tick.as_mut().map(|f| &mut **f as &mut dyn FnMut(f64));
         let options = run::Options { threading: hooks.threading, lend: hooks.lend, stop: Some(&mut detector), tick, observe, ..Default::default() };
         run::run_with(built, options)?

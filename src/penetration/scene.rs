@@ -201,6 +201,10 @@ pub struct Concrete {
     /// or `false` for none.
     #[serde(default = "default_compaction", with = "crate::scene::switch")]
     pub compaction: Option<Compaction>,
+    /// Coefficient of restitution of the concrete's broken (frictional) contacts, on each other
+    /// and on the projectile, 3D only (absent: elastic, e = 1; `kernel3d::law`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub restitution: Option<f64>,
 }
 
 /// The concrete's compaction (eq 6.11 and the rule after it), with defaults from a published
@@ -300,6 +304,7 @@ impl Default for Concrete {
             strength_factor: unit(),
             rate: default_rate(),
             compaction: default_compaction(),
+            restitution: None,
         }
     }
 }
@@ -466,6 +471,17 @@ pub struct OutcomeSpec {
     pub unresisted_change: f64,
     #[serde(default = "default_unresisted_s")]
     pub unresisted_s: f64,
+    /// The back face has scabbed once its crater (`Outcome::back_crater_in`) is this many
+    /// projectile widths across: a size of the projectile's, never of an element
+    /// (docs/penetration3d.md, "Scabbing"). Projectile widths.
+    #[serde(default = "default_scab_crater")]
+    pub scab_crater_calibres: f64,
+}
+
+/// One calibre: the smallest back-face crater set by the projectile rather than by the
+/// concrete's grain (docs/penetration3d.md, "Scabbing").
+fn default_scab_crater() -> f64 {
+    1.0
 }
 
 fn default_separation() -> f64 {
@@ -490,7 +506,14 @@ fn default_unresisted_s() -> f64 {
 
 impl Default for OutcomeSpec {
     fn default() -> Self {
-        OutcomeSpec { separation_fps: default_separation(), quiet_s: default_quiet(), check_every_steps: default_check(), unresisted_change: default_unresisted(), unresisted_s: default_unresisted_s() }
+        OutcomeSpec {
+            separation_fps: default_separation(),
+            quiet_s: default_quiet(),
+            check_every_steps: default_check(),
+            unresisted_change: default_unresisted(),
+            unresisted_s: default_unresisted_s(),
+            scab_crater_calibres: default_scab_crater(),
+        }
     }
 }
 
@@ -649,6 +672,7 @@ impl PenetrationScene {
         pos("outcome.separation_fps", o.separation_fps)?;
         pos("outcome.quiet_s", o.quiet_s)?;
         pos("outcome.unresisted_s", o.unresisted_s)?;
+        pos("outcome.scab_crater_calibres", o.scab_crater_calibres)?;
         if !(o.unresisted_change.is_finite() && o.unresisted_change >= 0.0 && o.unresisted_change < 1.0) {
             return Err(Error::input("outcome.unresisted_change", format!("must lie in [0, 1), got {}", o.unresisted_change)));
         }
@@ -658,6 +682,9 @@ impl PenetrationScene {
         if g.dim == 3 {
             self.validate_slab()?;
             return self.check_size();
+        }
+        if self.concrete.restitution.is_some() {
+            return Err(Error::input("concrete.restitution", "the 2D kernel's frictional contacts have no restitution dashpot (a 3D field)"));
         }
         if self.mapping.rule == MappingRule::SeedEffectiveDensity && p.weight_lb != seed::PROJECTILE_WEIGHT_LB {
             return Err(Error::input(

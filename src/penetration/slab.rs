@@ -7,8 +7,9 @@
 //! scene has. What changes with the dimension:
 //! * the target: `target.length_in` is the side of the square slab, `target.depth_in` its
 //!   thickness (along y, the projectile coming from above as in 2D); its four side faces held
-//!   (`slab.edges`): clamped over `target.support_length_in`, or simply supported on a line of
-//!   spheres along the back face's edges;
+//!   (`slab.edges`): clamped over `target.support_length_in`, simply supported on a line of
+//!   spheres along the back face's edges, or absorbing (dashpots that let the waves out, the
+//!   slab standing for the middle of a wall of large extent);
 //! * the projectile: a real cylinder of steel with its nose, `projectile.weight_lb` at
 //!   `slab.steel_density_lbs2_per_in4`, so its length follows from the weight unless
 //!   `projectile.length_in` is given (then the density follows: nothing to map, `[mapping]`
@@ -34,7 +35,7 @@ use crate::kernel3d::solid::Solid;
 use crate::material::{CompactionSpec, FailureCriterion, RateSpec};
 use crate::packing3d::{Box3, Grading};
 use crate::scene::OutputSpec;
-use crate::scene3d::{self, Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
+use crate::scene3d::{self, Absorb3, Axis3, Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
 use crate::shape3d::Projectile3;
 use crate::units::{M_PER_IN, fps_to_mps, in_to_m, lb_to_kg, lbs2_per_in4_to_kg_per_m3, psi_sqrt_in_to_pa_sqrt_m, psi_to_pa};
 
@@ -48,6 +49,10 @@ pub enum Edges {
     /// A line of spheres along each edge of the back face held in translation (free to turn
     /// about it): the slab bears on four knife edges.
     SimplySupported,
+    /// The slab as the middle of a wall of large extent: the spheres at each side face tied to
+    /// the wall beyond by dashpots matched to the concrete's impedance (`scene3d::Absorb3`,
+    /// Lysmer & Kuhlemeyer 1969), so the waves that reach the edges leave instead of ringing.
+    Absorbing,
 }
 
 /// `[slab]`: what only the 3D scene has (defaults in code).
@@ -184,6 +189,11 @@ impl PenetrationScene {
             }
         }
         scene3d::check_local_damping_ratio("slab.damping_ratio", s.damping_ratio)?;
+        if let Some(e) = self.concrete.restitution
+            && !(e > 0.0 && e <= 1.0)
+        {
+            return Err(Error::input("concrete.restitution", format!("must lie in (0, 1], got {e}")));
+        }
         if s.max_element_radius_in < s.element_radius_in {
             return Err(Error::input(
                 "slab.max_element_radius_in",
@@ -271,6 +281,7 @@ impl PenetrationScene {
             compressive_strength_pa: psi_to_pa(c.compressive_strength_psi),
             rate: c.rate.map(|r| RateSpec { averaging_length_m: Some(r.averaging_length_m.unwrap_or(in_to_m(super::scene::RATE_AVERAGING_LENGTH_IN))), ..r }),
             compaction,
+            restitution: c.restitution,
         };
         let a = p.angle_deg.to_radians();
         let axis = [a.sin(), -a.cos(), 0.0];
@@ -290,6 +301,7 @@ impl PenetrationScene {
             compressive_strength_pa: 0.0,
             rate: None,
             compaction: None,
+            restitution: None,
         };
         let (x0, z0) = (in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)), 0.5 * side);
         // Graded about the projectile's path from the impact point, coarse beyond.
@@ -344,7 +356,7 @@ impl PenetrationScene {
         // the back face when simply supported.
         let (band, pad) = (in_to_m(t.support_length_in) + r_big, 1e-9 + r_big);
         let y_max_m = match s.edges {
-            Edges::Clamped => depth + pad,
+            Edges::Clamped | Edges::Absorbing => depth + pad,
             Edges::SimplySupported => 1.5 * r_big,
         };
         let all = Box3 { x_min_m: -pad, x_max_m: side + pad, y_min_m: -pad, y_max_m, z_min_m: -pad, z_max_m: side + pad };
@@ -357,8 +369,24 @@ impl PenetrationScene {
         let kind = match s.edges {
             Edges::Clamped => "clamped",
             Edges::SimplySupported => "supported",
+            Edges::Absorbing => "absorbing",
         };
-        let fix = bands.into_iter().map(|(n, region)| Fix3 { name: format!("{kind}_{n}"), region, velocity_mps: [0.0; 3] }).collect();
+        let (fix, absorb) = match s.edges {
+            Edges::Absorbing => {
+                // The layer at each side face: centres within 1.5 mean radii of it (the radii
+                // spread ±20 % about the mean: the whole first layer).
+                let layer = 1.5 * r_big;
+                let faces = [
+                    ("x_low", Box3 { x_max_m: layer, ..all }, Axis3::X),
+                    ("x_high", Box3 { x_min_m: side - layer, ..all }, Axis3::X),
+                    ("z_low", Box3 { z_max_m: layer, ..all }, Axis3::Z),
+                    ("z_high", Box3 { z_min_m: side - layer, ..all }, Axis3::Z),
+                ];
+                let absorb = faces.into_iter().map(|(n, region, normal)| Absorb3 { name: format!("{kind}_{n}"), region, normal, area_m2: side * depth }).collect();
+                (vec![], absorb)
+            }
+            _ => (bands.into_iter().map(|(n, region)| Fix3 { name: format!("{kind}_{n}"), region, velocity_mps: [0.0; 3] }).collect(), vec![]),
+        };
         let scene = Scene3 {
             scene: General3 { name: self.penetration.name.clone(), dim: 3, duration_s: self.penetration.max_time_s },
             time_step: TimeStep3 { safety: self.penetration.safety, ..TimeStep3::default() },
@@ -393,6 +421,7 @@ impl PenetrationScene {
                 },
             ],
             fix,
+            absorb,
             load: vec![],
             probe: vec![],
             output: OutputSpec { every_steps: 1_000_000 },

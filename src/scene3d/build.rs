@@ -116,6 +116,18 @@ impl Scene3 {
                 held[e] = true;
             }
         }
+        // Each sphere's body (its material), for the boundary's impedance.
+        let body_of: Vec<usize> = packings.iter().enumerate().flat_map(|(k, p)| std::iter::repeat_n(k, p.centres_m.len())).collect();
+        let radii: Vec<f64> = packings.iter().flat_map(|p| p.radii_m.iter().copied()).collect();
+        for (k, a) in self.absorb.iter().enumerate() {
+            let layer: Vec<usize> = inside(&a.region).into_iter().filter(|&e| !held[e]).collect();
+            if layer.is_empty() {
+                return Err(Error::input(format!("absorb[{k}].box"), "holds no free sphere centre"));
+            }
+            for (&e, c) in layer.iter().zip(a.dashpots_kg_per_s(&layer, &radii, |e| self.solid(body_of[e]))) {
+                bld.dashpot(e, c);
+            }
+        }
         for (k, l) in self.load.iter().enumerate() {
             let group: Vec<usize> = inside(&l.region).into_iter().filter(|&e| !held[e]).collect();
             if group.is_empty() {

@@ -5,9 +5,11 @@
 //!
 //! Data flows one way: scene → [`crate::kernel3d::Model`] → [`crate::run::RunResult`] → tables.
 
+mod absorb;
 mod build;
 mod probe;
 
+pub use absorb::{Absorb3, Axis3, wave_speeds_mps};
 pub use build::{REFERENCE_MARGIN_R, REFERENCE_SIDE_R, recipe_bond_density};
 pub use probe::{Probe3, Quantity3};
 
@@ -42,6 +44,9 @@ pub struct Scene3 {
     /// Spheres in a box moving with a prescribed velocity, without spin (fixed if 0).
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub fix: Vec<Fix3>,
+    /// Faces through which waves leave the model (viscous boundaries).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub absorb: Vec<Absorb3>,
     /// A force shared by the free spheres in a box.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub load: Vec<Load3>,
@@ -283,6 +288,9 @@ impl Scene3 {
             if !x.velocity_mps.iter().all(|v| v.is_finite()) {
                 return Err(Error::input(format!("fix[{k}].velocity_mps"), format!("must be finite, got {:?}", x.velocity_mps)));
             }
+        }
+        for (k, a) in self.absorb.iter().enumerate() {
+            a.validate(&format!("absorb[{k}]"))?;
         }
         for (k, l) in self.load.iter().enumerate() {
             l.region.validate(&format!("load[{k}].box"))?;

@@ -23,8 +23,9 @@ pub trait Bodies {
     fn radius_m(&self, e: usize) -> f64;
     /// Element `e`'s mass, kg.
     fn mass_kg(&self, e: usize) -> f64;
-    /// True when element `e`'s motion is prescribed in every degree of freedom: what is bonded
-    /// to it is held (a support).
+    /// True when element `e` is a support: its motion prescribed in every degree of freedom, or
+    /// tied by a dashpot to what lies beyond the model (an absorbing boundary); what is bonded
+    /// to it is attached.
     fn held(&self, e: usize) -> bool;
     /// Call `f(i, j)` for each intact bond once, in the kernel's contact order.
     fn each_bond(&self, f: &mut dyn FnMut(usize, usize));

@@ -40,6 +40,11 @@ pub struct Class {
     pub ks_pa: f64,
     /// Coulomb coefficient μ.
     pub mu: f64,
+    /// Frictional contacts: damping ratio ζ of the normal dashpot that gives them their
+    /// coefficient of restitution ([`restitution_damping_ratio`]; 0: elastic, e = 1).
+    #[serde(default)]
+    pub contact_damping_ratio: f64,
+
     /// Rolling resistance (None: off).
     pub rolling: Option<rolling::Params>,
     /// Twisting resistance (None: off).
@@ -78,12 +83,21 @@ impl Class {
             kn_pa: kappa_n_pa,
             ks_pa: alpha * kappa_n_pa,
             mu,
+            contact_damping_ratio: 0.0,
             rolling: None,
             twisting: None,
             rate: rate::Params::default(),
             compaction: None,
         }
     }
+}
+
+/// The damping ratio ζ of a linear spring–dashpot that parts two bodies meeting head-on at e
+/// times their approach speed: ζ = −ln e / √(π² + ln² e) (the LAMMPS GRANULAR and YADE
+/// viscoelastic form; e = 1 gives 0).
+pub fn restitution_damping_ratio(e: f64) -> f64 {
+    let l = e.ln();
+    -l / (std::f64::consts::PI * std::f64::consts::PI + l * l).sqrt()
 }
 
 /// A class's springs and strengths at one contact of mean radius r̄.
@@ -162,6 +176,8 @@ pub struct Pair {
     pub v: [V3; 2],
     /// Half-step spins, rad/s.
     pub w: [V3; 2],
+    /// Masses, kg (the restitution dashpot's reduced mass).
+    pub m: [f64; 2],
 }
 
 /// A contact's action: the force on j (i takes its opposite), N, and the moments on i and j
@@ -179,8 +195,10 @@ pub struct Action {
 crate::kernel::ledger::mechanisms! {
     /// Energy the 3D contacts dissipated, J, by mechanism, and the bonds broken.
     Dissipation {
-        /// Sliding and the bond's shear plateau, J.
+        /// Sliding of frictional contacts (Coulomb), J.
         slip_j,
+        /// Intact bonds sheared along their shear plateau, J.
+        bond_shear_j,
         /// The bond's tensile plateau, J.
         plastic_j,
         /// Rolling past its cap, J.
@@ -191,6 +209,8 @@ crate::kernel::ledger::mechanisms! {
         fracture_j,
         /// Work along the bonds' compaction yield line, J.
         compaction_j,
+        /// Frictional contacts' normal dashpots (a restitution below 1), J.
+        collision_j,
         /// Energy the rate-dependent moduli took out of (> 0) or put into the bonds, J.
         rate_j,
     }
@@ -255,8 +275,21 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V
                 c.normal = n;
                 return Action::default();
             }
-            let f_n = normal::frictional(opening, k.kn);
-            let limit = friction::coulomb(f_n, class.mu, 0.0);
+            let mut f_n = normal::frictional(opening, k.kn);
+            if class.contact_damping_ratio > 0.0 {
+                // The restitution dashpot 2 ζ √(m* k_n) on the normal relative velocity (the half
+                // step's: explicit, paid for in the stable step). Not clamped at zero force: as
+                // in LAMMPS GRANULAR without limit_damping, the pair then parts at e exactly (a
+                // clamp parts it early, at 0.55 for e = 0.5), pulled together only in the last
+                // instants of an overlap.
+                let [mi, mj] = g.m;
+                let c = 2.0 * class.contact_damping_ratio * (mi * mj / (mi + mj) * k.kn).sqrt();
+                let v_n = dot(v_rel, n);
+                diss.collision_j += c * v_n * v_n * dt_s;
+                f_n += c * v_n;
+            }
+            // A pair the dashpot pulls together holds no friction.
+            let limit = friction::coulomb(f_n.min(0.0), class.mu, 0.0);
             let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.ks, limit);
             diss.slip_j += ws;
             (f_n, s)
@@ -346,7 +379,7 @@ fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair
     // The shear spring resists j's slip: its force on j is −k_s × slip.
     let base = if PARTS && ks != ks_last { scale(ks / ks_last, shear_last) } else { shear_last };
     let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, k.shear_n * xi);
-    diss.slip_j += ws;
+    diss.bond_shear_j += ws;
     if PARTS && kn != kn_last {
         // What the change of modulus took out of the springs: ½ (K_last − K) × last
         // stretch × new stretch (`kernel::law::rate`, "Stiffness").

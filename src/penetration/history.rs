@@ -1,0 +1,116 @@
+//! A penetration run's history (`run --history-every-ms`): at each record, where the projectile
+//! is and what resists it, and where the target's energy and damage are, near the path and far
+//! from it. What the summary row reports at the end, against time: to read where the impact's
+//! energy went and when the bonds far from the path broke.
+
+use serde::Serialize;
+
+use super::fragments;
+use super::outcome::{Detector, FAR_CALIBRES};
+use crate::run::Columns;
+use crate::simulation::Simulation;
+use crate::units::{M_PER_IN, mps_to_fps};
+
+/// Newtons in a kip (1000 lbf).
+const N_PER_KIP: f64 = 4448.221615260501;
+
+/// One record of a run's history.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct HistoryRow {
+    /// Time, ms.
+    pub time_ms: f64,
+    /// Depth of the nose below the original front face, in.
+    pub depth_in: f64,
+    /// The projectile's centre's speed along the impact axis, ft/s (> 0 going in).
+    pub v_axial_fps: f64,
+    /// The mean force resisting the projectile along its axis since the last record, kip: its
+    /// loss of axial momentum over the interval.
+    pub resistance_kip: f64,
+    /// Kinetic energy of the target's elements within `FAR_CALIBRES` of the axis, J.
+    pub near_kinetic_j: f64,
+    /// Kinetic energy of the target's elements beyond it, J.
+    pub far_kinetic_j: f64,
+    /// ... of those still attached to the supports (the slab's vibration away from the path,
+    /// without the debris flying over it), J.
+    pub far_attached_kinetic_j: f64,
+    /// Target bonds broken within `FAR_CALIBRES` of the axis, and beyond.
+    pub near_bonds_broken: u64,
+    /// Target bonds broken beyond `FAR_CALIBRES` of the axis.
+    pub far_bonds_broken: u64,
+    /// The ledger: kinetic and strain energy, and what was dissipated by mechanism, J.
+    pub kinetic_j: f64,
+    /// Strain energy, J.
+    pub strain_j: f64,
+    /// Dissipated by mechanism (the kernel's columns), J.
+    pub ledger: Columns,
+}
+
+/// The recorder.
+#[derive(Debug, Clone, Default)]
+pub struct History {
+    /// The records so far.
+    pub rows: Vec<HistoryRow>,
+    /// Target bonds at the start (near, far).
+    bonds_initial: Option<(u64, u64)>,
+    /// The last record's time (s) and the projectile's axial momentum (kg·m/s).
+    last: Option<(f64, f64)>,
+}
+
+impl History {
+    /// Take a record of `m`, laid out as `detector` reads it.
+    pub fn record<M: Simulation>(&mut self, m: &M, detector: &Detector) {
+        let (target, projectile) = (detector.target(), detector.projectile());
+        let axis = detector.layout.axis;
+        let (mut mass, mut p_axial, mut lowest) = (0.0, 0.0, f64::INFINITY);
+        for e in projectile {
+            let (v, me) = (m.velocity_mps(e), m.mass_kg(e));
+            mass += me;
+            p_axial += me * (v[0] * axis[0] + v[1] * axis[1] + v[2] * axis[2]);
+            lowest = lowest.min(m.position_m(e)[1] - m.radius_m(e));
+        }
+        let far_m = FAR_CALIBRES * detector.layout.projectile_width_m;
+        let (frags, of) = fragments::fragments(m, target.clone(), |_| (false, false));
+        let (mut near_k, mut far_k, mut far_attached_k) = (0.0, 0.0, 0.0);
+        for e in target.clone() {
+            let v = m.velocity_mps(e);
+            let k = 0.5 * m.mass_kg(e) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            if detector.from_axis_m(m.initial_m(e)) > far_m {
+                far_k += k;
+                if frags[of[e - target.start] as usize].supported {
+                    far_attached_k += k;
+                }
+            } else {
+                near_k += k;
+            }
+        }
+        let (mut near, mut far) = (0u64, 0u64);
+        m.each_bond(&mut |i, j| {
+            if target.contains(&i) && target.contains(&j) {
+                let (a, b) = (m.initial_m(i), m.initial_m(j));
+                if detector.from_axis_m([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]) > far_m { far += 1 } else { near += 1 }
+            }
+        });
+        let (near0, far0) = *self.bonds_initial.get_or_insert((near, far));
+        let t = m.time_s();
+        let resistance = match self.last {
+            Some((t0, p0)) if t > t0 => (p0 - p_axial) / (t - t0),
+            _ => 0.0,
+        };
+        self.last = Some((t, p_axial));
+        let tally = m.tally();
+        self.rows.push(HistoryRow {
+            time_ms: t * 1e3,
+            depth_in: (detector.layout.front_y_m - lowest) / M_PER_IN,
+            v_axial_fps: mps_to_fps(p_axial / mass),
+            resistance_kip: resistance / N_PER_KIP,
+            near_kinetic_j: near_k,
+            far_kinetic_j: far_k,
+            far_attached_kinetic_j: far_attached_k,
+            near_bonds_broken: near0.saturating_sub(near),
+            far_bonds_broken: far0.saturating_sub(far),
+            kinetic_j: tally.kinetic_energy_j,
+            strain_j: tally.strain_energy_j,
+            ledger: Columns(tally.contacts_j.into_iter().chain([("mass_damping_j".to_string(), tally.mass_damping_j)]).collect()),
+        });
+    }
+}
