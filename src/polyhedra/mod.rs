@@ -1,21 +1,28 @@
 //! Rigid convex polyhedra (seed 001, Zhao, Feng et al. 2021): shapes with exact mass
-//! properties, the seed's quaternion rotation update, and the GJK/EPA contact geometry on the
-//! Minkowski difference. Internal units SI (m, kg, s); inertia per unit density in m⁵.
+//! properties, the seed's quaternion rotation update, the GJK/EPA contact geometry on the
+//! Minkowski difference, and the contact law on its features. Internal units SI (m, kg, s);
+//! inertia per unit density in m⁵.
 //!
 //! Not yet a kernel: nothing here is wired to `simulation`'s contract.
 
+pub mod body;
 pub mod detect;
 pub mod epa;
 pub mod gjk;
 pub mod hull;
+pub mod law;
 pub mod mass;
+pub mod pair;
 pub mod rotation;
 pub mod shape;
 pub mod simplex;
 pub mod support;
 
+pub use body::Body;
 pub use detect::contact;
 pub use epa::Contact;
+pub use law::Law;
+pub use pair::{Push, interact};
 pub use rotation::Spin;
 pub use shape::Polyhedron;
 pub use support::Placed;
