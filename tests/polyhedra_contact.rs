@@ -166,3 +166,25 @@ fn unit_cubes_meet_face_to_face_edge_to_face_and_vertex_to_face_at_their_closed_
     // The same vertex 1 mm short of the face: no contact.
     assert!(cubes(Vector3::new(0.5 + 0.75f64.sqrt() + 0.001, 0.05, 0.0), vertex).is_none());
 }
+
+#[test]
+fn a_flat_contact_acts_at_the_centre_of_its_patch() {
+    use demsweep::polyhedra::patch::contact_centre;
+    let c = cube(1.0);
+    let a = Placed { shape: &c, position: Vector3::zeros(), orientation: c.rest_orientation };
+    // Face on face: B's face over y ∈ [−0.2, 0.8], z ∈ [−0.7, 0.3], A's over [−0.5, 0.5]²; the
+    // patch's centre (0.15, −0.1), midway between the two faces at x = 0.5 and 0.49.
+    let b = Placed { shape: &c, position: Vector3::new(0.99, 0.3, -0.2), orientation: c.rest_orientation };
+    let at = contact_centre(&a, &b, &contact(&a, &b).unwrap());
+    assert!((at - Vector3::new(0.495, 0.15, -0.1)).norm() < 1e-12, "face on face: {at}");
+    // Edge on face: B's edge along z over [−0.4, 0.6], cut by A's face to [−0.4, 0.5].
+    let edge = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), std::f64::consts::FRAC_PI_4);
+    let b = Placed { shape: &c, position: Vector3::new(0.5 + 0.5f64.sqrt() - 0.02, 0.0, 0.1), orientation: edge * c.rest_orientation };
+    let at = contact_centre(&a, &b, &contact(&a, &b).unwrap());
+    assert!((at - Vector3::new(0.49, 0.0, 0.05)).norm() < 1e-12, "edge on face: {at}");
+    // A corner on a face: the seed's c_M itself.
+    let vertex = UnitQuaternion::rotation_between(&Vector3::new(-1.0, -1.0, -1.0), &-Vector3::x()).unwrap();
+    let b = Placed { shape: &c, position: Vector3::new(0.5 + 0.75f64.sqrt() - 0.03, 0.05, 0.0), orientation: vertex * c.rest_orientation };
+    let found = contact(&a, &b).unwrap();
+    assert!((contact_centre(&a, &b, &found) - found.point()).norm() < 1e-15, "a corner's contact is c_M");
+}

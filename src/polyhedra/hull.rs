@@ -69,7 +69,7 @@ pub fn hull(points: &[Vector3<f64>], tol: f64) -> Result<Hull> {
 
 /// The points `on` one face plane (outward `normal`) as the face's corner loop, counter-clockwise
 /// seen from outside: their 2D hull in the plane, dropping points inside or on an edge.
-fn ring(points: &[Vector3<f64>], on: &[usize], normal: Vector3<f64>, tol: f64) -> Vec<usize> {
+pub(super) fn ring(points: &[Vector3<f64>], on: &[usize], normal: Vector3<f64>, tol: f64) -> Vec<usize> {
     let centre = on.iter().map(|&p| points[p]).sum::<Vector3<f64>>() / on.len() as f64;
     let u = (points[on[0]] - centre).normalize();
     let w = normal.cross(&u);

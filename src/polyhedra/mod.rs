@@ -13,6 +13,7 @@ pub mod hull;
 pub mod law;
 pub mod mass;
 pub mod pair;
+pub mod patch;
 pub mod rotation;
 pub mod shape;
 pub mod simplex;

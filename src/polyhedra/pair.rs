@@ -6,6 +6,7 @@ use nalgebra::Vector3;
 use super::body::Body;
 use super::detect::contact;
 use super::law::Law;
+use super::patch::contact_centre;
 use super::shape::Polyhedron;
 
 /// What a pair in contact does to its bodies: force (N) and torque about the centroid (N·m).
@@ -29,7 +30,7 @@ pub fn interact(law: &Law, (a, sa): (&Body, &Polyhedron), (b, sb): (&Body, &Poly
         *shear = Vector3::zeros();
         return None;
     };
-    let point = c.point();
+    let point = contact_centre(&pa, &pb, &c);
     let approach = b.point_velocity(&point) - a.point_velocity(&point);
     let mass = a.mass * b.mass / (a.mass + b.mass);
     let f = law.force(&c, &approach, mass, shear, dt);
