@@ -36,7 +36,7 @@ fn main() {
     let args: Vec<usize> = std::env::args().skip(1).map(|s| s.parse().expect("usage: polyhedra_contact_cost [CORNERS] [PAIRS]")).collect();
     let (corners, pairs) = (args.first().copied().unwrap_or(20), args.get(1).copied().unwrap_or(2000));
     let mut draw = Draw(61);
-    let mut cell = |d: &mut Draw| Polyhedron::from_points(&(0..corners).map(|_| d.point(0.1)).collect::<Vec<_>>(), 1e-13).unwrap();
+    let cell = |d: &mut Draw| Polyhedron::from_points(&(0..corners).map(|_| d.point(0.1)).collect::<Vec<_>>(), 1e-13).unwrap();
     let shapes: Vec<(Polyhedron, Polyhedron)> = (0..pairs).map(|_| (cell(&mut draw), cell(&mut draw))).collect();
     let mean_corners = shapes.iter().map(|(a, b)| a.vertices.len() + b.vertices.len()).sum::<usize>() as f64 / (2 * pairs) as f64;
     let (mut time, mut count) = ([0.0f64; 2], [0usize; 2]);

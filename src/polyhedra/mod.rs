@@ -1,11 +1,12 @@
 //! Rigid convex polyhedra (seed 001, Zhao, Feng et al. 2021): shapes with exact mass
 //! properties, the seed's quaternion rotation update, the GJK/EPA contact geometry on the
-//! Minkowski difference, and the contact law on its features. Internal units SI (m, kg, s);
-//! inertia per unit density in m⁵.
+//! Minkowski difference, the contact law on its features, and Voronoi cells for a rockfill.
+//! Internal units SI (m, kg, s); inertia per unit density in m⁵.
 //!
 //! Not yet a kernel: nothing here is wired to `simulation`'s contract.
 
 pub mod body;
+pub mod clip;
 pub mod detect;
 pub mod epa;
 pub mod gjk;
@@ -18,6 +19,7 @@ pub mod rotation;
 pub mod shape;
 pub mod simplex;
 pub mod support;
+pub mod voronoi;
 
 pub use body::Body;
 pub use detect::contact;

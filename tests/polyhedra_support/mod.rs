@@ -2,7 +2,7 @@
 #![allow(dead_code)]
 
 use demsweep::polyhedra::Polyhedron;
-use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use nalgebra::{Matrix3, Quaternion, UnitQuaternion, Vector3};
 
 /// A 64-bit permuted congruential generator (PCG-XSH-RR's state step with a xorshift output),
 /// seeded, so every test draws the same shapes on every machine.
@@ -50,4 +50,30 @@ impl Draw {
         let points: Vec<Vector3<f64>> = (0..count).map(|_| self.in_ball(r)).collect();
         Polyhedron::from_points(&points, 1e-12 * r).unwrap()
     }
+}
+
+/// Volume, first moment and second moment ∫x xᵀ dV by the divergence theorem: with x·n = d on a
+/// planar face, V = Σ d A/3, ∫x dV = Σ d ∫x dA/4, ∫x xᵀ dV = Σ d ∫x xᵀ dA/5 (div(x_p x_q x) =
+/// 5 x_p x_q); a face's quadratic integral exactly by the three edge midpoints of each triangle.
+pub fn by_divergence(vertices: &[Vector3<f64>], faces: &[Vec<usize>]) -> (f64, Vector3<f64>, Matrix3<f64>) {
+    // About the first corner, not the library's vertex mean, so rounding differs too.
+    let o = vertices[0];
+    let (mut v, mut first, mut second) = (0.0, Vector3::zeros(), Matrix3::zeros());
+    for f in faces {
+        let x: Vec<Vector3<f64>> = f.iter().map(|&k| vertices[k] - o).collect();
+        let n = (1..x.len() - 1).map(|k| (x[k] - x[0]).cross(&(x[k + 1] - x[0]))).sum::<Vector3<f64>>().normalize();
+        let d = n.dot(&x[0]);
+        for k in 1..x.len() - 1 {
+            let (a, b, c) = (x[0], x[k], x[k + 1]);
+            let area = 0.5 * (b - a).cross(&(c - a)).norm();
+            v += d * area / 3.0;
+            first += (a + b + c) * (d * area / 12.0);
+            for m in [(a + b) * 0.5, (b + c) * 0.5, (c + a) * 0.5] {
+                second += m * m.transpose() * (d * area / 15.0);
+            }
+        }
+    }
+    let centroid = first / v;
+    let about = second - centroid * centroid.transpose() * v;
+    (v, centroid + o, Matrix3::identity() * about.trace() - about)
 }
