@@ -15,6 +15,7 @@ pub mod law;
 pub mod mass;
 pub mod pair;
 pub mod patch;
+pub mod projectile;
 pub mod rotation;
 pub mod shape;
 pub mod simplex;
