@@ -27,6 +27,7 @@ pub mod packing3d;
 pub mod material;
 pub mod penetration;
 pub mod picture;
+pub mod polyhedra;
 pub mod provenance;
 pub mod report;
 pub mod run;
