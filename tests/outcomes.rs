@@ -214,7 +214,6 @@ fn look(t: f64, v: f64, attached_bonds: u64) -> Look {
         scab: (0, 0.0),
         back_crater_m: 0.0,
         scabs: false,
-        far_bonds: 0,
         spall: (0, 0.0),
         through: false,
         clear: false,

@@ -33,7 +33,7 @@ pub struct HistoryRow {
     /// ... of those still attached to the supports (the slab's vibration away from the path,
     /// without the debris flying over it), J.
     pub far_attached_kinetic_j: f64,
-    /// Target bonds broken within `FAR_CALIBRES` of the axis, and beyond.
+    /// Target bonds broken within `FAR_CALIBRES` of the axis.
     pub near_bonds_broken: u64,
     /// Target bonds broken beyond `FAR_CALIBRES` of the axis.
     pub far_bonds_broken: u64,
@@ -83,13 +83,7 @@ impl History {
                 near_k += k;
             }
         }
-        let (mut near, mut far) = (0u64, 0u64);
-        m.each_bond(&mut |i, j| {
-            if target.contains(&i) && target.contains(&j) {
-                let (a, b) = (m.initial_m(i), m.initial_m(j));
-                if detector.from_axis_m([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]) > far_m { far += 1 } else { near += 1 }
-            }
-        });
+        let (near, far) = detector.bonds_near_far(m);
         let (near0, far0) = *self.bonds_initial.get_or_insert((near, far));
         let t = m.time_s();
         let resistance = match self.last {

@@ -156,8 +156,6 @@ pub struct Look {
     pub back_crater_m: f64,
     /// ... and it is wide enough to be a scab (`OutcomeSpec::scab_crater_calibres`).
     pub scabs: bool,
-    /// Intact target bonds beyond `FAR_CALIBRES` of the axis.
-    pub far_bonds: u64,
     /// Spall fragments, their mass (kg).
     pub spall: (u64, f64),
     /// The projectile is wholly past the back face.
@@ -303,7 +301,7 @@ impl Detector {
             back_share[e - target.start] = size * weight(model.radius_m(e)) / total;
         }
         let mut detector = Detector { layout, spec, target, projectile, faces, under, back_share, far_bonds_initial: 0, slice, tracking: Tracking::default() };
-        detector.far_bonds_initial = detector.far_bonds(model);
+        detector.far_bonds_initial = detector.bonds_near_far(model).1;
         Ok(detector)
     }
 
@@ -327,17 +325,22 @@ impl Detector {
         (off[0] * off[0] + off[1] * off[1] + off[2] * off[2]).sqrt()
     }
 
-    /// Intact target bonds whose midpoints started beyond `FAR_CALIBRES` of the impact axis.
-    fn far_bonds(&self, m: &(impl Bodies + ?Sized)) -> u64 {
+    /// Intact target bonds whose midpoints started within `FAR_CALIBRES` of the impact axis,
+    /// and beyond (read at the end and by the history, not at every check).
+    pub fn bonds_near_far(&self, m: &(impl Bodies + ?Sized)) -> (u64, u64) {
         let far = FAR_CALIBRES * self.layout.projectile_width_m;
-        let mut n = 0;
+        let (mut near_n, mut far_n) = (0, 0);
         m.each_bond(&mut |i, j| {
             if self.target.contains(&i) && self.target.contains(&j) {
                 let (a, b) = (m.initial_m(i), m.initial_m(j));
-                n += u64::from(self.from_axis_m([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]) > far);
+                if self.from_axis_m([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])]) > far {
+                    far_n += 1;
+                } else {
+                    near_n += 1;
+                }
             }
         });
-        n
+        (near_n, far_n)
     }
 
     /// Look at the model.
@@ -426,7 +429,6 @@ impl Detector {
             scab,
             back_crater_m,
             scabs: back_crater_m >= self.spec.scab_crater_calibres * lay.projectile_width_m,
-            far_bonds: self.far_bonds(m),
             spall,
             through: rear < local,
             clear: rear < local - 2.0 * 2.0 * lay.concrete_radius_m,
@@ -457,7 +459,7 @@ impl Detector {
             spall_mass_lb: kg_to_lb(l.spall.1),
             spall_fragments: l.spall.0,
             spall_time_s: t.spall_time_s.or((l.spall.0 > 0).then_some(l.time_s)),
-            far_bonds_broken_fraction: if self.far_bonds_initial == 0 { 0.0 } else { 1.0 - l.far_bonds as f64 / self.far_bonds_initial as f64 },
+            far_bonds_broken_fraction: if self.far_bonds_initial == 0 { 0.0 } else { 1.0 - self.bonds_near_far(m).1 as f64 / self.far_bonds_initial as f64 },
         }
     }
 }
