@@ -9,7 +9,7 @@ use super::fragments;
 use super::outcome::{Detector, FAR_CALIBRES};
 use crate::run::Columns;
 use crate::simulation::Simulation;
-use crate::units::{M_PER_IN, mps_to_fps};
+use crate::units::{KG_PER_LB, M_PER_IN, mps_to_fps};
 
 /// Newtons in a kip (1000 lbf).
 const N_PER_KIP: f64 = 4448.221615260501;
@@ -33,6 +33,16 @@ pub struct HistoryRow {
     /// ... of those still attached to the supports (the slab's vibration away from the path,
     /// without the debris flying over it), J.
     pub far_attached_kinetic_j: f64,
+    /// Front-face ejecta: the target's elements above the original front face moving out of
+    /// the slab, their mass, lb.
+    pub ejecta_lb: f64,
+    /// ... their kinetic energy, J.
+    pub ejecta_kinetic_j: f64,
+    /// ... their momentum out of the slab along the axis, N·s (> 0 out).
+    pub ejecta_momentum_n_s: f64,
+    /// The whole target's momentum along the impact axis, N·s (> 0 going in): with the
+    /// projectile's loss and the supports' impulse it closes the momentum balance.
+    pub target_momentum_n_s: f64,
     /// Target bonds broken within `FAR_CALIBRES` of the axis.
     pub near_bonds_broken: u64,
     /// Target bonds broken beyond `FAR_CALIBRES` of the axis.
@@ -71,9 +81,15 @@ impl History {
         let far_m = FAR_CALIBRES * detector.layout.projectile_width_m;
         let (frags, of) = fragments::fragments(m, target.clone(), |_| (false, false));
         let (mut near_k, mut far_k, mut far_attached_k) = (0.0, 0.0, 0.0);
+        let (mut ejecta_kg, mut ejecta_k, mut ejecta_p, mut target_p) = (0.0, 0.0, 0.0, 0.0);
         for e in target.clone() {
-            let v = m.velocity_mps(e);
-            let k = 0.5 * m.mass_kg(e) * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            let (v, me) = (m.velocity_mps(e), m.mass_kg(e));
+            let k = 0.5 * me * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+            let v_in = v[0] * axis[0] + v[1] * axis[1] + v[2] * axis[2];
+            target_p += me * v_in;
+            if m.position_m(e)[1] - m.radius_m(e) > detector.layout.front_y_m && v_in < 0.0 {
+                (ejecta_kg, ejecta_k, ejecta_p) = (ejecta_kg + me, ejecta_k + k, ejecta_p - me * v_in);
+            }
             if detector.from_axis_m(m.initial_m(e)) > far_m {
                 far_k += k;
                 if frags[of[e - target.start] as usize].supported {
@@ -100,6 +116,10 @@ impl History {
             near_kinetic_j: near_k,
             far_kinetic_j: far_k,
             far_attached_kinetic_j: far_attached_k,
+            ejecta_lb: ejecta_kg / KG_PER_LB,
+            ejecta_kinetic_j: ejecta_k,
+            ejecta_momentum_n_s: ejecta_p,
+            target_momentum_n_s: target_p,
             near_bonds_broken: near0.saturating_sub(near),
             far_bonds_broken: far0.saturating_sub(far),
             kinetic_j: tally.kinetic_energy_j,
