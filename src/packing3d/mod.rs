@@ -11,6 +11,7 @@ use crate::error::{Error, Result};
 use crate::lattice::SplitMix64;
 use std::f64::consts::PI;
 
+pub mod cache;
 mod graded;
 pub use graded::{Grading, random_dense_graded};
 
