@@ -74,6 +74,12 @@ pub struct Solid {
     /// (e = 1).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub restitution: Option<f64>,
+    /// The most shear stress any of its contacts carries, Pa, bonded or broken, on π r̄²: the
+    /// limit of crushed concrete's strength (Holmquist, Johnson & Cook 1993's S_max) that
+    /// unbreakable grains lack, whose friction otherwise grows with pressure without end.
+    /// Absent: none.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crushed_shear_strength_pa: Option<f64>,
 }
 
 /// What a class's rate part needs of the scene: the fastest speed in it and the mean radius of
@@ -161,6 +167,11 @@ impl Solid {
         {
             return Err(Error::input(format!("{prefix}.restitution"), format!("must lie in (0, 1], got {e}")));
         }
+        if let Some(t) = self.crushed_shear_strength_pa
+            && !(t > 0.0 && t.is_finite())
+        {
+            return Err(Error::input(format!("{prefix}.crushed_shear_strength_pa"), format!("must be positive and finite, got {t}")));
+        }
         Ok(())
     }
 
@@ -196,6 +207,7 @@ impl Solid {
             ks_pa: ks,
             mu: self.friction_coefficient,
             contact_damping_ratio: self.restitution.map_or(0.0, restitution_damping_ratio),
+            crushed_shear_pa: self.crushed_shear_strength_pa.unwrap_or(f64::INFINITY),
             rolling: self.rolling.map(|r| rolling::Params { kr_pa: ks, eta: r.eta }),
             twisting: self.twisting.map(|t| twisting::Params {
                 kt_pa: 0.5 * ks,
@@ -247,6 +259,8 @@ pub fn between((sa, a): (&Solid, &Class), (sb, b): (&Solid, &Class), ctx: RateCo
         mu: 0.5 * (a.mu + b.mu),
         // The less elastic of the two (a fragment is no bouncier on steel than on itself).
         contact_damping_ratio: a.contact_damping_ratio.max(b.contact_damping_ratio),
+        // Crushed concrete on steel slides within the concrete: the weaker limit.
+        crushed_shear_pa: a.crushed_shear_pa.min(b.crushed_shear_pa),
         rolling: match (a.rolling, b.rolling) {
             (Some(x), Some(y)) => Some(rolling::Params { kr_pa: series(x.kr_pa, y.kr_pa), eta: x.eta.min(y.eta) }),
             _ => None,

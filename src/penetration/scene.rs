@@ -205,6 +205,11 @@ pub struct Concrete {
     /// and on the projectile, 3D only (absent: elastic, e = 1; `kernel3d::law`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub restitution: Option<f64>,
+    /// The most shear stress a concrete contact carries, intact or broken, psi, 3D only
+    /// (absent: none; `kernel3d::solid::Solid::crushed_shear_strength_pa`). Holmquist, Johnson
+    /// & Cook's S_max = 7 f'c as an equivalent stress is 7 f'c/√3 in shear (12 124 psi here).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub crushed_shear_strength_psi: Option<f64>,
 }
 
 /// The concrete's compaction (eq 6.11 and the rule after it), with defaults from a published
@@ -305,6 +310,7 @@ impl Default for Concrete {
             rate: default_rate(),
             compaction: default_compaction(),
             restitution: None,
+            crushed_shear_strength_psi: None,
         }
     }
 }
@@ -685,6 +691,9 @@ impl PenetrationScene {
         }
         if self.concrete.restitution.is_some() {
             return Err(Error::input("concrete.restitution", "the 2D kernel's frictional contacts have no restitution dashpot (a 3D field)"));
+        }
+        if self.concrete.crushed_shear_strength_psi.is_some() {
+            return Err(Error::input("concrete.crushed_shear_strength_psi", "the 2D kernel's contacts have no crushed-shear limit (a 3D field)"));
         }
         if self.mapping.rule == MappingRule::SeedEffectiveDensity && p.weight_lb != seed::PROJECTILE_WEIGHT_LB {
             return Err(Error::input(

@@ -194,6 +194,11 @@ impl PenetrationScene {
         {
             return Err(Error::input("concrete.restitution", format!("must lie in (0, 1], got {e}")));
         }
+        if let Some(t) = self.concrete.crushed_shear_strength_psi
+            && !(t > 0.0 && t.is_finite())
+        {
+            return Err(Error::input("concrete.crushed_shear_strength_psi", format!("must be positive and finite, got {t}")));
+        }
         if s.max_element_radius_in < s.element_radius_in {
             return Err(Error::input(
                 "slab.max_element_radius_in",
@@ -282,6 +287,7 @@ impl PenetrationScene {
             rate: c.rate.map(|r| RateSpec { averaging_length_m: Some(r.averaging_length_m.unwrap_or(in_to_m(super::scene::RATE_AVERAGING_LENGTH_IN))), ..r }),
             compaction,
             restitution: c.restitution,
+            crushed_shear_strength_pa: c.crushed_shear_strength_psi.map(psi_to_pa),
         };
         let a = p.angle_deg.to_radians();
         let axis = [a.sin(), -a.cos(), 0.0];
@@ -302,6 +308,7 @@ impl PenetrationScene {
             rate: None,
             compaction: None,
             restitution: None,
+            crushed_shear_strength_pa: None,
         };
         let (x0, z0) = (in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)), 0.5 * side);
         // Graded about the projectile's path from the impact point, coarse beyond.

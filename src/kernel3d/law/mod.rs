@@ -44,6 +44,11 @@ pub struct Class {
     /// coefficient of restitution ([`restitution_damping_ratio`]; 0: elastic, e = 1).
     #[serde(default)]
     pub contact_damping_ratio: f64,
+    /// The most shear stress a contact carries, Pa, bonded (its shear plateau) or frictional
+    /// (its Coulomb limit), on π r̄²: crushed concrete's limit, which grains that cannot break
+    /// do not have (∞: none).
+    #[serde(default = "unlimited")]
+    pub crushed_shear_pa: f64,
 
     /// Rolling resistance (None: off).
     pub rolling: Option<rolling::Params>,
@@ -57,6 +62,10 @@ pub struct Class {
     /// a critical stress f'c on the bond's area π r̄² (None: off).
     #[serde(default)]
     pub compaction: Option<Compaction>,
+}
+
+fn unlimited() -> f64 {
+    f64::INFINITY
 }
 
 /// A class's compaction: the critical compressive force is `critical_pa` × π r̄², the yield
@@ -84,6 +93,7 @@ impl Class {
             ks_pa: alpha * kappa_n_pa,
             mu,
             contact_damping_ratio: 0.0,
+            crushed_shear_pa: f64::INFINITY,
             rolling: None,
             twisting: None,
             rate: rate::Params::default(),
@@ -111,6 +121,8 @@ pub struct Local {
     pub tension_n: f64,
     /// Bond shear plateau, N.
     pub shear_n: f64,
+    /// The most shear force the contact carries, bonded or frictional, N (∞: no limit).
+    pub crushed_shear_n: f64,
     /// Plastic opening at which the bond breaks, m.
     pub at_break_m: f64,
     /// Frictional springs, N/m.
@@ -148,6 +160,7 @@ impl Class {
             bond_ks: self.bond_ks_pa * r_m,
             tension_n,
             shear_n: self.bond_shear_pa * area,
+            crushed_shear_n: self.crushed_shear_pa * area,
             at_break_m,
             kn: self.kn_pa * r_m,
             ks: self.ks_pa * r_m,
@@ -289,7 +302,7 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V
                 f_n += c * v_n;
             }
             // A pair the dashpot pulls together holds no friction.
-            let limit = friction::coulomb(f_n.min(0.0), class.mu, 0.0);
+            let limit = friction::coulomb(f_n.min(0.0), class.mu, 0.0).min(k.crushed_shear_n);
             let (s, ws) = capped::capped(shear_last, scale(-1.0, slip), k.ks, limit);
             diss.slip_j += ws;
             (f_n, s)
@@ -378,7 +391,7 @@ fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair
     }
     // The shear spring resists j's slip: its force on j is −k_s × slip.
     let base = if PARTS && ks != ks_last { scale(ks / ks_last, shear_last) } else { shear_last };
-    let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, k.shear_n * xi);
+    let (s, ws) = capped::capped_from(shear_last, base, scale(-1.0, slip), ks, (k.shear_n * xi).min(k.crushed_shear_n));
     diss.bond_shear_j += ws;
     if PARTS && kn != kn_last {
         // What the change of modulus took out of the springs: ½ (K_last − K) × last
