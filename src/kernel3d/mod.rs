@@ -278,7 +278,7 @@ impl Model {
     /// only stain the supports' reactions (walls of held spheres passing through each other).
     pub fn search(&mut self) {
         let held = &self.spheres.held;
-        let mut pairs = detect::candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m);
+        let mut pairs = detect::candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m, self.parallel());
         pairs.retain(|&(i, j)| !(held[i as usize] && held[j as usize]));
         let old = std::mem::take(&mut self.state.contacts);
         let classes = |i: u32, j: u32| self.class_of(i, j);
