@@ -36,6 +36,7 @@ fn class(kt_pa: f64) -> Class {
         ks_pa: g() * PI / 2.0,
         mu: 0.5,
         contact_damping_ratio: 0.0,
+        crushed_shear_pa: f64::INFINITY,
         rolling: Some(rolling::Params { kr_pa: E * PI / 4.0, eta: f64::INFINITY }),
         twisting: Some(twisting::Params { kt_pa, cap: twisting::Cap::None }),
         rate: Default::default(),

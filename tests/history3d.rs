@@ -8,7 +8,7 @@
 use demsweep::penetration::history::History;
 use demsweep::penetration::scene::PenetrationScene;
 use demsweep::penetration::{Hooks, run3};
-use demsweep::simulation::{Bodies, Simulation};
+use demsweep::simulation::Bodies;
 
 /// Newtons in a kip.
 const N_PER_KIP: f64 = 4448.221615260501;

@@ -25,6 +25,7 @@ fn concrete() -> Class {
         ks_pa: ks,
         mu: 0.5,
         contact_damping_ratio: 0.0,
+        crushed_shear_pa: f64::INFINITY,
         rolling: Some(rolling::Params { kr_pa: ks, eta: 0.2 }),
         twisting: Some(twisting::Params { kt_pa: 0.5 * ks, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
         rate: Default::default(),

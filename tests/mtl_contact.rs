@@ -25,6 +25,7 @@ fn class(rolling: Option<rolling::Params>, twisting: Option<twisting::Params>) -
         ks_pa: KN / R,
         mu: 0.5,
         contact_damping_ratio: 0.0,
+        crushed_shear_pa: f64::INFINITY,
         rolling,
         twisting,
         rate: Default::default(),

@@ -36,6 +36,7 @@ fn cube(side_r: f64, sign: f64, strain_to: f64, transits: f64) -> (f64, f64) {
         ks_pa: alpha * kappa,
         mu: 0.5,
         contact_damping_ratio: 0.0,
+        crushed_shear_pa: f64::INFINITY,
         rolling: Some(rolling::Params { kr_pa: alpha * kappa, eta: 0.1 }),
         twisting: Some(twisting::Params { kt_pa: 0.5 * alpha * kappa, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
         rate: Default::default(),

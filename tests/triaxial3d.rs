@@ -32,6 +32,7 @@ fn sample(rolling_on: bool) -> (Model, [Vec<usize>; 6]) {
         ks_pa: 0.5 * KAPPA,
         mu: 0.5,
         contact_damping_ratio: 0.0,
+        crushed_shear_pa: f64::INFINITY,
         // k_r = k_s r² (eq 31), η = 0.3; twisting capped by eq 42 with the contact's φ.
         rolling: rolling_on.then_some(rolling::Params { kr_pa: 0.5 * KAPPA, eta: 0.3 }),
         twisting: rolling_on.then_some(twisting::Params { kt_pa: 0.25 * KAPPA, cap: twisting::Cap::MohrCoulomb { tan_phi: 0.5, cohesion_pa: 0.0 } }),
