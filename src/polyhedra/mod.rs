@@ -3,14 +3,16 @@
 //! Minkowski difference, the contact law on its features, and Voronoi cells for a rockfill.
 //! Internal units SI (m, kg, s); inertia per unit density in m⁵.
 //!
-//! Not yet a kernel: nothing here is wired to `simulation`'s contract.
+//! [`kernel`] puts them under `simulation`'s contract.
 
 pub mod body;
 pub mod clip;
+pub mod container;
 pub mod detect;
 pub mod epa;
 pub mod gjk;
 pub mod hull;
+pub mod kernel;
 pub mod law;
 pub mod mass;
 pub mod pair;
