@@ -20,6 +20,7 @@ pub mod patch;
 pub mod projectile;
 pub mod rockfill;
 pub mod rotation;
+pub mod scene;
 pub mod settle;
 pub mod shape;
 pub mod simplex;
