@@ -78,6 +78,8 @@ fn a_packed_rockfill_is_the_same_bits_each_time() {
         p.bodies.iter().flat_map(|b| b.position.iter().chain(b.spin.orientation.coords.iter()).map(|x| x.to_bits()).collect::<Vec<_>>()).collect()
     };
     assert!(bits(&a) == bits(&b), "two packings differ");
+    println!("packing springs {:.3e} J loaded, {:.3e} J unloaded", a.loaded_j, a.elastic_j);
+    assert!(a.loaded_j > 0.0 && a.elastic_j < 1e-2 * a.loaded_j, "the packing is not unloaded");
     assert!(a.fraction >= 0.5 || a.pressure_capped, "compaction stopped short: {}", a.fraction);
     assert!(a.fraction < 0.75, "denser than rocks pack: {}", a.fraction);
     // Denser than the cells were cut: compacted.

@@ -3,7 +3,8 @@
 //! Minkowski difference, the contact law on its features, and Voronoi cells for a rockfill.
 //! Internal units SI (m, kg, s); inertia per unit density in m⁵.
 //!
-//! [`kernel`] puts them under `simulation`'s contract.
+//! [`kernel`] puts them under `simulation`'s contract; [`rockfill`] and [`settle`] cut and pack a
+//! Voronoi rockfill; [`scene`] is the projectile-through-rockfill scene `demsweep run` takes.
 
 pub mod body;
 pub mod clip;

@@ -1,7 +1,7 @@
 //! A rockfill settled and compacted (seed §4.1): the rocks dropped under gravity into a box of
 //! held walls, a top wall (the lid) then brought down onto them until the solid fills the asked
 //! fraction of the box below it, or the lid's push reaches a cap; the rocks then left to come to
-//! rest. Eq 6's viscous damping takes the motion out (a packing wants the state, not the path).
+//! rest, and unloaded (gravity off, the lid lifted) so that no packing overlap is left. Eq 6's viscous damping takes the motion out (a packing wants the state, not the path).
 
 use std::time::Instant;
 
@@ -30,7 +30,7 @@ pub struct Packing {
     pub lid_speed_mps: f64,
     /// Mean pressure of the lid at which compaction stops short of the fraction, Pa.
     pub lid_pressure_pa: f64,
-    /// Simulated time allowed for each of the drop, the compaction and the rest, s.
+    /// Simulated time allowed for each of the drop, the compaction, the rest and the unloading, s.
     pub phase_s: f64,
 }
 
@@ -53,6 +53,10 @@ pub struct Packed {
     pub wall_s: f64,
     /// Kinetic energy left at the end, J.
     pub kinetic_j: f64,
+    /// Elastic energy in the packing law's springs under gravity and the lid, J.
+    pub loaded_j: f64,
+    /// Elastic energy left in them once unloaded, J.
+    pub elastic_j: f64,
 }
 
 /// The rocks of `rocks` packed in the box `lo`–`hi` (m) as `p` says.
@@ -99,6 +103,14 @@ pub fn pack(rocks: &Rocks, lo: &Vector3<f64>, hi: &Vector3<f64>, p: &Packing) ->
     m.state.bodies[lid].velocity.z = 0.0;
     run_until(&mut m, chunk, phase, still)?;
     let fraction = reached(&m);
+    let top_m = lid_face(&m);
+    // Unloaded: gravity off and the lid lifted, the rocks let go of the overlaps their weight
+    // and the lid pressed into the soft packing law. Left in, those overlaps would be springs
+    // of the event's far stiffer law, and their energy (MJ in the full layer) would burst it.
+    m.gravity = Vector3::zeros();
+    m.state.bodies[lid].position.z += 0.1 * (hi.z - lo.z);
+    let loaded_j = m.state.ledger.elastic_j;
+    run_until(&mut m, chunk, phase, |m: &Model| m.state.ledger.elastic_j < 1e-3 * loaded_j && still(m))?;
     if !fraction.is_finite() {
         return Err(Error::input("rockfill.fraction", "the packing came apart"));
     }
@@ -110,12 +122,14 @@ pub fn pack(rocks: &Rocks, lo: &Vector3<f64>, hi: &Vector3<f64>, p: &Packing) ->
     Ok(Packed {
         shapes: rocks.shapes.clone(),
         bodies,
-        top_m: lid_face(&m),
+        top_m,
         fraction,
         pressure_capped,
         steps: m.state.steps,
         wall_s: started.elapsed().as_secs_f64(),
         kinetic_j: m.state.ledger.kinetic_j,
+        loaded_j,
+        elastic_j: m.state.ledger.elastic_j,
     })
 }
 

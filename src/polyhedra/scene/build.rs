@@ -82,14 +82,16 @@ impl RockfillScene {
     pub fn build(&self) -> Result<Built<Model>> {
         let packed = self.pack()?;
         eprintln!(
-            "{}: {} rocks packed to a fraction {:.3} under {:.3} m ({}), {} steps in {:.1} s",
+            "{}: {} rocks packed to a fraction {:.3} under {:.3} m ({}), {} steps in {:.1} s; packing springs {:.3e} J loaded, {:.3e} J once unloaded",
             self.rockfill.name,
             packed.bodies.len(),
             packed.fraction,
             packed.top_m,
             if packed.pressure_capped { "stopped by the lid's pressure cap" } else { "the asked fraction" },
             packed.steps,
-            packed.wall_s
+            packed.wall_s,
+            packed.loaded_j,
+            packed.elastic_j
         );
         self.build_on(&packed)
     }
