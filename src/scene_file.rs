@@ -6,6 +6,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result};
 use crate::penetration::PenetrationScene;
+use crate::polyhedra::scene::RockfillScene;
 use crate::scene::overrides::{Override, apply};
 use crate::scene::{Scene, parse};
 use crate::scene3d::Scene3;
@@ -19,6 +20,8 @@ pub enum SceneFile {
     Kernel3(Scene3),
     /// A penetration scene (`[penetration]`), which builds its own kernel scene.
     Penetration(PenetrationScene),
+    /// A projectile through a rockfill of polyhedra (`[rockfill]`).
+    Rockfill(RockfillScene),
 }
 
 /// Read a scene document from `text` with `overrides` applied (`--set`), as a file would be.
@@ -42,7 +45,11 @@ pub fn load_text(text: &str, origin: &Path, overrides: &[Override]) -> Result<Sc
         }
         other => other,
     };
-    if doc.contains_key("penetration") {
+    if doc.contains_key("rockfill") {
+        let r: RockfillScene = parse(&text, origin).map_err(blame)?;
+        r.validate().map_err(|e| blame(e.in_file(origin)))?;
+        Ok(SceneFile::Rockfill(r))
+    } else if doc.contains_key("penetration") {
         let mut p: PenetrationScene = parse(&text, origin).map_err(blame)?;
         p.resolve_defaults();
         p.validate().map_err(|e| blame(e.in_file(origin)))?;

@@ -35,7 +35,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let scene = match crate::scene_file::load(&args.scene, &[])? {
         SceneFile::Penetration(p) => p,
-        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => return Err(Error::input("--scene", format!("{} is not a penetration scene ([penetration])", args.scene.display()))),
+        SceneFile::Kernel(_) | SceneFile::Kernel3(_) | SceneFile::Rockfill(_) => return Err(Error::input("--scene", format!("{} is not a penetration scene ([penetration])", args.scene.display()))),
     };
     let out = args.out.clone().unwrap_or_else(|| {
         let stem = args.scene.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default();

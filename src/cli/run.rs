@@ -74,6 +74,7 @@ pub fn run(args: Args) -> Result<()> {
             run_kernel(&args, scene.build().map_err(|e| e.in_file(&args.scene))?)
         }
         SceneFile::Kernel3(scene) => run_kernel(&args, scene.build().map_err(|e| e.in_file(&args.scene))?),
+        SceneFile::Rockfill(scene) => run_kernel(&args, scene.build().map_err(|e| e.in_file(&args.scene))?),
         SceneFile::Penetration(scene) => run_penetration(&args, scene),
     }
 }

@@ -69,7 +69,7 @@ pub fn run(args: Args) -> Result<()> {
     let overrides: Vec<Override> = args.set.iter().map(|s| Override::parse(s)).collect::<Result<_>>()?;
     let scene = match crate::scene_file::load(&args.scene, &overrides)? {
         SceneFile::Penetration(s) => s,
-        SceneFile::Kernel(_) | SceneFile::Kernel3(_) => return Err(Error::input("scene", "timestep takes a penetration scene")),
+        SceneFile::Kernel(_) | SceneFile::Kernel3(_) | SceneFile::Rockfill(_) => return Err(Error::input("scene", "timestep takes a penetration scene")),
     };
     if !(args.every_ms.is_finite() && args.every_ms > 0.0) {
         return Err(Error::input("--every-ms", format!("must be a number > 0, got {}", args.every_ms)));

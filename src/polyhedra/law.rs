@@ -60,18 +60,49 @@ impl Law {
     /// the value is e only approximately. The normal force is not clipped at zero, so the
     /// linear law's rebound is exactly e (a brief pull as the dashpot closes).
     pub fn force(&self, c: &Contact, approach: &Vector3<f64>, mass: f64, shear: &mut Vector3<f64>, dt: f64) -> Vector3<f64> {
+        self.act(c, approach, mass, shear, dt).force
+    }
+
+    /// [`Law::force`] with the energies a kernel's ledger needs.
+    pub fn act(&self, c: &Contact, approach: &Vector3<f64>, mass: f64, shear: &mut Vector3<f64>, dt: f64) -> Act {
         let n = c.normal;
         let tangent_stiffness = self.exponent * self.stiffness * c.depth.powf(self.exponent - 1.0);
         let dashpot = 2.0 * self.damping_ratio() * (mass * tangent_stiffness).sqrt();
-        let normal = self.stiffness * c.depth.powf(self.exponent) - dashpot * approach.dot(&n);
+        let closing = approach.dot(&n);
+        let normal = self.stiffness * c.depth.powf(self.exponent) - dashpot * closing;
         // Carried: projected into the new plane with its length kept, then stretched by the slip.
         let kept = *shear - n * n.dot(shear);
         *shear = if kept.norm() > 0.0 { kept * (shear.norm() / kept.norm()) } else { Vector3::zeros() };
-        *shear += (approach - n * n.dot(approach)) * dt;
+        let carried = *shear;
+        let slip = (approach - n * n.dot(approach)) * dt;
+        *shear += slip;
         let cap = self.friction * normal.max(0.0);
         if self.shear_stiffness * shear.norm() > cap {
             *shear *= cap / (self.shear_stiffness * shear.norm());
         }
-        n * normal - *shear * self.shear_stiffness
+        let spring = 0.5 * self.shear_stiffness;
+        Act {
+            force: n * normal - *shear * self.shear_stiffness,
+            elastic_j: self.stiffness * c.depth.powf(self.exponent + 1.0) / (self.exponent + 1.0) + spring * shear.norm_squared(),
+            damping_j: dashpot * closing * closing * dt,
+            // The tangential force's work against the slip, less what the spring kept: zero
+            // without friction, the Coulomb loss when capped.
+            friction_j: self.shear_stiffness * shear.dot(&slip) - spring * (shear.norm_squared() - carried.norm_squared()),
+        }
     }
+}
+
+/// One contact's force and energies in a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Act {
+    /// Force on B, N.
+    pub force: Vector3<f64>,
+    /// Elastic energy stored now: k_n δ^(n+1)/(n+1) in the normal spring, ½ k_s |s|² in the
+    /// tangential one, J.
+    pub elastic_j: f64,
+    /// What the dashpot took over the step, J.
+    pub damping_j: f64,
+    /// What sliding took over the step, J (with an uncapped spring, the ½ k_s |slip|² the
+    /// step's end-of-step spring force spends).
+    pub friction_j: f64,
 }

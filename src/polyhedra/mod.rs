@@ -3,20 +3,26 @@
 //! Minkowski difference, the contact law on its features, and Voronoi cells for a rockfill.
 //! Internal units SI (m, kg, s); inertia per unit density in m⁵.
 //!
-//! Not yet a kernel: nothing here is wired to `simulation`'s contract.
+//! [`kernel`] puts them under `simulation`'s contract; [`rockfill`] and [`settle`] cut and pack a
+//! Voronoi rockfill; [`scene`] is the projectile-through-rockfill scene `demsweep run` takes.
 
 pub mod body;
 pub mod clip;
+pub mod container;
 pub mod detect;
 pub mod epa;
 pub mod gjk;
 pub mod hull;
+pub mod kernel;
 pub mod law;
 pub mod mass;
 pub mod pair;
 pub mod patch;
 pub mod projectile;
+pub mod rockfill;
 pub mod rotation;
+pub mod scene;
+pub mod settle;
 pub mod shape;
 pub mod simplex;
 pub mod support;

@@ -5,7 +5,7 @@ use nalgebra::Vector3;
 
 use super::body::Body;
 use super::detect::contact;
-use super::law::Law;
+use super::law::{Act, Law};
 use super::patch::contact_centre;
 use super::shape::Polyhedron;
 
@@ -24,7 +24,12 @@ pub struct Push {
 
 /// The push between bodies `a` (of shape `sa`) and `b` (of `sb`), or None when apart, which also
 /// clears the pair's tangential spring `shear` (m).
-pub fn interact(law: &Law, (a, sa): (&Body, &Polyhedron), (b, sb): (&Body, &Polyhedron), shear: &mut Vector3<f64>, dt: f64) -> Option<Push> {
+pub fn interact(law: &Law, a: (&Body, &Polyhedron), b: (&Body, &Polyhedron), shear: &mut Vector3<f64>, dt: f64) -> Option<Push> {
+    interact_act(law, a, b, shear, dt).map(|(push, _)| push)
+}
+
+/// [`interact`] with the law's energies of the step ([`Act`]).
+pub fn interact_act(law: &Law, (a, sa): (&Body, &Polyhedron), (b, sb): (&Body, &Polyhedron), shear: &mut Vector3<f64>, dt: f64) -> Option<(Push, Act)> {
     let (pa, pb) = (a.placed(sa), b.placed(sb));
     let Some(c) = contact(&pa, &pb) else {
         *shear = Vector3::zeros();
@@ -32,7 +37,17 @@ pub fn interact(law: &Law, (a, sa): (&Body, &Polyhedron), (b, sb): (&Body, &Poly
     };
     let point = contact_centre(&pa, &pb, &c);
     let approach = b.point_velocity(&point) - a.point_velocity(&point);
-    let mass = a.mass * b.mass / (a.mass + b.mass);
-    let f = law.force(&c, &approach, mass, shear, dt);
-    Some(Push { force_a: -f, torque_a: (point - a.position).cross(&-f), force_b: f, torque_b: (point - b.position).cross(&f) })
+    let act = law.act(&c, &approach, reduced_mass(a.mass, b.mass), shear, dt);
+    let f = act.force;
+    Some((Push { force_a: -f, torque_a: (point - a.position).cross(&-f), force_b: f, torque_b: (point - b.position).cross(&f) }, act))
+}
+
+/// The pair's reduced mass, kg; a held body (infinite mass) leaves the other's.
+fn reduced_mass(a: f64, b: f64) -> f64 {
+    match (a.is_finite(), b.is_finite()) {
+        (true, true) => a * b / (a + b),
+        (false, true) => b,
+        (true, false) => a,
+        (false, false) => f64::INFINITY,
+    }
 }

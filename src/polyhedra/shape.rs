@@ -51,6 +51,15 @@ impl Polyhedron {
         Polyhedron { vertices: body, faces, normals, edges, volume: props.volume, principal, rest_position: props.centroid, rest_orientation }
     }
 
+    /// A rectangular block of edges `size` (m) along x, y, z.
+    pub fn cuboid(size: &Vector3<f64>) -> Self {
+        let half = size * 0.5;
+        let corner = |k: usize| Vector3::new([-half.x, half.x][k & 1], [-half.y, half.y][(k >> 1) & 1], [-half.z, half.z][(k >> 2) & 1]);
+        // Faces counter-clockwise seen from outside: −x, +x, −y, +y, −z, +z.
+        let faces = vec![vec![0, 4, 6, 2], vec![1, 3, 7, 5], vec![0, 1, 5, 4], vec![2, 6, 7, 3], vec![0, 2, 3, 1], vec![4, 5, 7, 6]];
+        Self::from_faces(&(0..8).map(corner).collect::<Vec<_>>(), faces)
+    }
+
     /// The largest distance of a corner from the centroid, m (the bounding sphere's radius).
     pub fn radius(&self) -> f64 {
         self.vertices.iter().map(|v| v.norm()).fold(0.0, f64::max)

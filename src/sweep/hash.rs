@@ -13,6 +13,7 @@ pub fn canonical(scene: &SceneFile) -> String {
         SceneFile::Kernel(s) => s.to_toml(),
         SceneFile::Kernel3(s) => s.to_toml(),
         SceneFile::Penetration(p) => toml::to_string(p).expect("a penetration scene serialises"),
+        SceneFile::Rockfill(r) => toml::to_string(r).expect("a rockfill scene serialises"),
     }
 }
 

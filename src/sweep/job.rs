@@ -34,7 +34,7 @@ impl Base {
     pub fn level(&self) -> String {
         match &self.scene {
             SceneFile::Penetration(p) => p.penetration.level.to_string(),
-            SceneFile::Kernel(_) | SceneFile::Kernel3(_) => String::new(),
+            SceneFile::Kernel(_) | SceneFile::Kernel3(_) | SceneFile::Rockfill(_) => String::new(),
         }
     }
 }
@@ -81,6 +81,7 @@ pub fn run_job(base: &Base, job: &Job, lend: Option<&dyn Lend>) -> Result<Row> {
         }
         SceneFile::Kernel(scene) => kernel_row(scene.build().map_err(|e| e.in_file(&base.path))?, lend),
         SceneFile::Kernel3(scene) => kernel_row(scene.build().map_err(|e| e.in_file(&base.path))?, lend),
+        SceneFile::Rockfill(scene) => kernel_row(scene.build().map_err(|e| e.in_file(&base.path))?, lend),
     }
 }
 
