@@ -79,6 +79,7 @@ box = {{ x_min_m = -1.0, x_max_m = 1.0, y_min_m = -1.0, y_max_m = 0.041, z_min_m
         v0_mps: 100.0,
         thickness_m: 1.0,
         concrete_radius_m: R,
+        mirror_axes: vec![],
     };
     let det = Detector::new(&m, layout.clone(), OutcomeSpec::default()).unwrap();
     (m, det, layout)

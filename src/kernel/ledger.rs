@@ -33,6 +33,14 @@ macro_rules! mechanisms {
                 self.broken += o.broken;
             }
 
+            /// Add `weight` × another's energies (its bonds broken counted whole): a contact
+            /// that stands for part of a pair of the whole (`kernel3d::mirror`).
+            #[inline(always)]
+            pub fn add_scaled(&mut self, o: &$name, weight: f64) {
+                $(self.$field += weight * o.$field;)*
+                self.broken += o.broken;
+            }
+
             /// (name, J) of every mechanism, in a fixed order.
             pub fn terms(&self) -> Vec<(&'static str, f64)> {
                 vec![$((stringify!($field), self.$field)),*]

@@ -5,6 +5,7 @@ use std::ops::Range;
 
 use super::contact::{Bond, Contact, Extra};
 use super::law::Class;
+use super::mirror::Mirrors;
 use super::stability::{Link, omega_max_sq};
 use super::state::{Spheres, State};
 use super::vec3::{V3, norm, scale, sub};
@@ -21,7 +22,10 @@ pub struct Builder {
     bodies: Vec<Body>,
     kinds: usize,
     classes: Vec<Option<Class>>,
-    bonds: Vec<(u32, u32)>,
+    /// Bonds (i, j, image): j itself (image 0) or seen through symmetry planes.
+    bonds: Vec<(u32, u32, u8)>,
+    /// The symmetry planes (`mirror`): the model is a part of a mirror-symmetric whole.
+    pub mirrors: Mirrors,
     /// Mass-proportional damping α, 1/s.
     pub alpha_per_s: f64,
     /// Fraction of the stability limit taken as the step.
@@ -39,7 +43,7 @@ pub struct Builder {
 impl Builder {
     /// An empty model of `kinds` sphere kinds (materials).
     pub fn new(kinds: usize) -> Builder {
-        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3, dt_s: None, rate_averaging: None }
+        Builder { spheres: Spheres::default(), bodies: Vec::new(), kinds, classes: vec![None; kinds * kinds], bonds: Vec::new(), mirrors: Mirrors::default(), alpha_per_s: 0.0, safety: 0.9, skin_ratio: 0.3, dt_s: None, rate_averaging: None }
     }
 
     /// The class of contacts between kinds a and b (both orders).
@@ -81,7 +85,13 @@ impl Builder {
 
     /// Bond spheres i and j at their present distance.
     pub fn bond(&mut self, i: usize, j: usize) {
-        self.bonds.push((i.min(j) as u32, i.max(j) as u32));
+        self.bonds.push((i.min(j) as u32, i.max(j) as u32, 0));
+    }
+
+    /// Bond sphere i to the image of j across the symmetry planes of `image` (`mirrors`), at
+    /// their present distance.
+    pub fn bond_image(&mut self, i: usize, j: usize, image: u8) {
+        self.bonds.push((i.min(j) as u32, i.max(j) as u32, image));
     }
 
     /// Hold sphere e, moving at `velocity_mps` (zero: fixed), without spin.
@@ -109,6 +119,18 @@ impl Builder {
     pub fn mass(&mut self, e: usize, mass_kg: f64, inertia_kg_m2: f64) {
         self.spheres.mass_kg[e] = mass_kg;
         self.spheres.inertia_kg_m2[e] = inertia_kg_m2;
+    }
+
+    /// Weigh each sphere of `range` that a symmetry plane (`mirrors`) cuts by the share of its
+    /// volume on the model's side (the rest is its image's): a whole made of the part and its
+    /// images then has the packing's mass where the packing had it.
+    pub fn weigh_cut_spheres(&mut self, range: Range<usize>) {
+        for e in range {
+            let (c, r) = (self.spheres.initial_m[e], self.spheres.radius_m[e]);
+            let share: f64 = self.mirrors.0.iter().map(|m| Mirrors::volume_share(c[m.axis] - m.at_m, r)).product();
+            self.spheres.mass_kg[e] *= share;
+            self.spheres.inertia_kg_m2[e] *= share;
+        }
     }
 
     /// Scale the masses and inertias of the spheres `range` so that they weigh `total_kg`: a
@@ -156,12 +178,14 @@ impl Builder {
         bonds.sort_unstable();
         bonds.dedup();
         let pos = s.initial_m.clone();
+        let mirrors = self.mirrors;
         let contacts: Vec<Contact> = bonds
             .iter()
-            .map(|&(i, j)| {
-                let dx = sub(pos[j as usize], pos[i as usize]);
+            .map(|&(i, j, image)| {
+                let dx = sub(mirrors.point(pos[j as usize], image), pos[i as usize]);
                 let d = norm(dx);
                 let mut c = Contact::new(i, j, class_of(i, j), Bond::Intact, d, scale(1.0 / d, dx));
+                c.image = image;
                 // A bond whose class has a rate or compaction part carries its state.
                 let class = &classes[c.class as usize];
                 if class.rate.enabled || class.compaction.is_some() {
@@ -170,13 +194,14 @@ impl Builder {
                 c
             })
             .collect();
-        let rate_field = match &self.rate_averaging {
+        let mut rate_field = match &self.rate_averaging {
             Some((length_m, kinds)) => {
                 let members = (0..n).filter(|&e| kinds.contains(&s.kind[e])).map(|e| e as u32).collect();
                 RateField::new(members, &s.initial_m, n, *length_m)
             }
             None => RateField::default(),
         };
+        mirrors.0.iter().for_each(|m| rate_field.mirror(m.axis, m.at_m));
         let uniform_radius_m = s.radius_m.first().copied().filter(|&r| s.radius_m.iter().all(|&x| x == r));
         let mut model = Model {
             spheres: s,
@@ -190,6 +215,7 @@ impl Builder {
             threading: Threading::Pool,
             parallel_min_contacts: super::PARALLEL_MIN_CONTACTS,
             uniform_radius_m,
+            mirrors,
             actions: Vec::new(),
             shares: (Vec::new(), Vec::new()),
             locals: Vec::new(),

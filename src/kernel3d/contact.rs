@@ -6,7 +6,7 @@ use super::vec3::V3;
 pub use crate::kernel::contact::Bond;
 pub use crate::kernel::law::Extra;
 
-/// A contact's record. Everything here evolves except `i`, `j` and `class`.
+/// A contact's record. Everything here evolves except `i`, `j`, `class` and `image`.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub struct Contact {
     /// First sphere (i < j).
@@ -15,6 +15,9 @@ pub struct Contact {
     pub j: u32,
     /// Contact class (`class_index` of the two kinds).
     pub class: u16,
+    /// Which symmetry planes j is seen through (`mirror::Mirrors`, a bit per plane; 0: j
+    /// itself, and i < j; else i ≤ j).
+    pub image: u8,
     /// Bonded, or frictional after failure or for a new contact.
     pub bond: Bond,
     /// Rest length d0, m (the centre distance when the bond formed; r_i + r_j for a new one).
@@ -37,7 +40,7 @@ pub struct Contact {
 impl Contact {
     /// A fresh contact of `class` between i < j at rest length `rest_m` along `normal`.
     pub fn new(i: u32, j: u32, class: u16, bond: Bond, rest_m: f64, normal: V3) -> Contact {
-        Contact { i, j, class, bond, rest_m, normal, shear_n: [0.0; 3], plastic_opening_m: 0.0, rolling_nm: [0.0; 3], twisting_nm: 0.0, extra: None }
+        Contact { i, j, class, image: 0, bond, rest_m, normal, shear_n: [0.0; 3], plastic_opening_m: 0.0, rolling_nm: [0.0; 3], twisting_nm: 0.0, extra: None }
     }
 
     /// Forget the history of a contact that let go (a bond broke, or a frictional contact came

@@ -86,15 +86,17 @@ impl Simulation for Model {
     }
     fn tally(&self) -> Tally {
         let l = &self.state.ledger;
+        // Energies of the whole a model with symmetry planes is a part of (`mirror`).
+        let c = self.mirrors.copies();
         // The energies at the last whole step, second order in Δt (`kernel3d::energy`).
         let w = self.whole_step();
-        let (ke, se) = (w.kinetic_j, w.strain_j);
-        let dissipated_j = w.mass_damping_j + w.local_damping_j + w.radiated_j + l.contacts.total_j();
+        let (ke, se) = (c * w.kinetic_j, c * w.strain_j);
+        let dissipated_j = c * (w.mass_damping_j + w.local_damping_j + w.radiated_j + l.contacts.total_j());
         // Local damping and what the boundary let out (3D only) are listed after the contacts'
         // mechanisms.
-        let mut by_mechanism: Vec<(String, f64)> = l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), v)).collect();
-        by_mechanism.push(("local_damping_j".to_string(), w.local_damping_j));
-        by_mechanism.push(("radiated_j".to_string(), w.radiated_j));
+        let mut by_mechanism: Vec<(String, f64)> = l.contacts.terms().into_iter().map(|(k, v)| (k.to_string(), c * v)).collect();
+        by_mechanism.push(("local_damping_j".to_string(), c * w.local_damping_j));
+        by_mechanism.push(("radiated_j".to_string(), c * w.radiated_j));
         Tally {
             elements: self.spheres.len() as u64,
             bonds_broken: l.bonds_broken(),
@@ -104,12 +106,12 @@ impl Simulation for Model {
             dt_limit: format!("{:.2} of the contact-by-contact bound over the contacts and the candidates", self.motion.dt_s / self.dt_bound_s),
             kinetic_energy_j: ke,
             strain_energy_j: se,
-            external_work_j: w.external_j,
-            mass_damping_j: w.mass_damping_j,
+            external_work_j: c * w.external_j,
+            mass_damping_j: c * w.mass_damping_j,
             contacts_j: by_mechanism,
             dissipated_j,
-            energy_residual_j: ke + se - (l.initial_j + w.external_j - dissipated_j),
-            energy_in_j: l.initial_j + w.external_j.abs(),
+            energy_residual_j: ke + se - (c * (l.initial_j + w.external_j) - dissipated_j),
+            energy_in_j: c * (l.initial_j + w.external_j.abs()),
             neighbour_rebuilds: self.state.searches,
             neighbour_local_updates: 0,
         }

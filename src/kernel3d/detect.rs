@@ -8,6 +8,7 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
 use super::contact::{Bond, Contact};
+use super::mirror::Mirrors;
 use super::vec3::{V3, norm, scale, sub};
 
 /// A hasher for cell keys: a multiply and rotate per 8 bytes. The std hasher (SipHash, made to
@@ -100,14 +101,14 @@ pub fn candidates(pos_m: &[V3], radius_m: &[f64], skin_m: f64, parallel: bool) -
 }
 
 /// The contact list after a search: the old contacts that are bonds or still candidates, in
-/// order, and a fresh frictional contact for each new candidate (`class(i, j)`, rest length
-/// r_i + r_j, normal along the centres).
-pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32)], pos_m: &[V3], radius_m: &[f64], class: impl Fn(u32, u32) -> u16) -> Vec<Contact> {
+/// order, and a fresh frictional contact for each new candidate (i, j, image) (`class(i, j)`,
+/// rest length r_i + r_j, normal along the centres, j seen through `image`'s planes).
+pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32, u8)], pos_m: &[V3], radius_m: &[f64], mirrors: &Mirrors, class: impl Fn(u32, u32) -> u16) -> Vec<Contact> {
     let mut out = Vec::with_capacity(pairs.len());
     let mut old = old.into_iter().peekable();
     let mut fresh = pairs.iter().peekable();
     loop {
-        let key_old = old.peek().map(|c| (c.i, c.j));
+        let key_old = old.peek().map(|c| (c.i, c.j, c.image));
         let key_new = fresh.peek().map(|&&p| p);
         match (key_old, key_new) {
             (None, None) => break,
@@ -122,11 +123,13 @@ pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32)], pos_m: &[V3], radius_m: &[
                     out.push(c);
                 }
             }
-            (_, Some((i, j))) => {
+            (_, Some((i, j, image))) => {
                 let (iu, ju) = (i as usize, j as usize);
-                let dx = sub(pos_m[ju], pos_m[iu]);
+                let dx = sub(mirrors.point(pos_m[ju], image), pos_m[iu]);
                 let n = scale(1.0 / norm(dx), dx);
-                out.push(Contact::new(i, j, class(i, j), Bond::Frictional, radius_m[iu] + radius_m[ju], n));
+                let mut c = Contact::new(i, j, class(i, j), Bond::Frictional, radius_m[iu] + radius_m[ju], n);
+                c.image = image;
+                out.push(c);
                 fresh.next();
             }
             (Some(_), None) => unreachable!("an old contact with no candidate left is taken above"),

@@ -90,7 +90,8 @@ impl Model {
             .iter()
             .map(|c| {
                 let (i, j) = (c.i as usize, c.j as usize);
-                law::stored_j(c, &self.classes[c.class as usize], norm(sub(pos_m[j], pos_m[i])), law::mean_radius_m([r[i], r[j]]))
+                let d = norm(sub(self.mirrors.point(pos_m[j], c.image), pos_m[i]));
+                super::mirror::Mirrors::weight(c.i, c.j, c.image) * law::stored_j(c, &self.classes[c.class as usize], d, law::mean_radius_m([r[i], r[j]]))
             })
             .sum()
     }

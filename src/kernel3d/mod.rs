@@ -14,6 +14,7 @@ pub mod detect;
 pub mod energy;
 pub mod integrate;
 pub mod law;
+pub mod mirror;
 pub mod solid;
 pub mod stability;
 pub mod state;
@@ -23,6 +24,7 @@ pub mod vec3;
 pub use build::Builder;
 
 use contact::Contact;
+use mirror::Mirrors;
 use law::{Class, Dissipation, Pair};
 use state::{Spheres, State};
 use vec3::{V3, add, dot, sub};
@@ -61,6 +63,9 @@ pub struct Model {
     /// The one radius every sphere has, m, if they share one (each class's springs are then
     /// taken once a step, not once per contact).
     pub uniform_radius_m: Option<f64>,
+    /// The symmetry planes: the model is one of `mirrors.copies()` mirror-image parts of the
+    /// whole (none: the whole).
+    pub mirrors: Mirrors,
     // What stepping changes.
     /// The evolving state.
     pub state: State,
@@ -86,6 +91,7 @@ struct View<'a> {
     classes: &'a [Class],
     locals: &'a [law::Local],
     rate_vel: &'a [V3],
+    mirrors: &'a Mirrors,
     dt: f64,
 }
 
@@ -97,7 +103,22 @@ impl View<'_> {
         let (i, j) = (c.i as usize, c.j as usize);
         let (r, pos) = (&self.sp.radius_m, self.pos);
         let m = &self.sp.mass_kg;
-        let pair = Pair { r: [r[i], r[j]], dx_m: sub(pos[j], pos[i]), v: [self.vel[i], self.vel[j]], w: [self.spin[i], self.spin[j]], m: [m[i], m[j]] };
+        let rate = (!self.rate_vel.is_empty()).then(|| [self.rate_vel[i], self.rate_vel[j]]);
+        let (pair, rate) = match c.image {
+            0 => (Pair { r: [r[i], r[j]], dx_m: sub(pos[j], pos[i]), v: [self.vel[i], self.vel[j]], w: [self.spin[i], self.spin[j]], m: [m[i], m[j]] }, rate),
+            k => {
+                // j as its image across the planes of k.
+                let mi = self.mirrors;
+                let pair = Pair {
+                    r: [r[i], r[j]],
+                    dx_m: sub(mi.point(pos[j], k), pos[i]),
+                    v: [self.vel[i], mi.vector(self.vel[j], k)],
+                    w: [self.spin[i], mi.axial(self.spin[j], k)],
+                    m: [m[i], m[j]],
+                };
+                (pair, rate.map(|[a, b]| [a, mi.vector(b, k)]))
+            }
+        };
         let class = &self.classes[c.class as usize];
         let here;
         let k = match self.locals.get(c.class as usize) {
@@ -107,18 +128,36 @@ impl View<'_> {
                 &here
             }
         };
-        law::act_at(c, class, k, &pair, self.rate_vel, self.dt, diss)
+        if c.image != 0 && i == j {
+            // A sphere against its own image: half the pair's energy is the mirrored part's.
+            let mut own = Dissipation::default();
+            let a = law::act_at(c, class, k, &pair, rate, self.dt, &mut own);
+            diss.add_scaled(&own, 0.5);
+            return a;
+        }
+        law::act_at(c, class, k, &pair, rate, self.dt, diss)
     }
 }
 
-/// Add contact `c`'s action `a` to the force and moment sums of its spheres.
+/// Add contact `c`'s action `a` to the force and moment sums of its spheres (an image
+/// contact's reaction reflected back onto j; none onto a sphere from its own image, whose
+/// reaction acts on the mirrored part).
 #[inline(always)]
-fn scatter(force: &mut [V3], moment: &mut [V3], c: &Contact, a: &law::Action) {
+fn scatter(force: &mut [V3], moment: &mut [V3], c: &Contact, a: &law::Action, mirrors: &Mirrors) {
     let (i, j) = (c.i as usize, c.j as usize);
-    force[j] = add(force[j], a.force_j_n);
     force[i] = sub(force[i], a.force_j_n);
     moment[i] = add(moment[i], a.moment_i_nm);
-    moment[j] = add(moment[j], a.moment_j_nm);
+    match c.image {
+        0 => {
+            force[j] = add(force[j], a.force_j_n);
+            moment[j] = add(moment[j], a.moment_j_nm);
+        }
+        _ if i == j => {}
+        k => {
+            force[j] = add(force[j], mirrors.vector(a.force_j_n, k));
+            moment[j] = add(moment[j], mirrors.axial(a.moment_j_nm, k));
+        }
+    }
 }
 
 /// Contacts, and spheres, per chunk: the unit of work on the pool and of the partial sums.
@@ -172,7 +211,8 @@ impl Model {
         }
         let locals = &*locals;
         self.rate_field.update(&st.pos_m, &st.vel_mps, &sp.mass_kg);
-        let view = View { sp, pos: &st.pos_m, vel: &st.vel_mps, spin: &st.spin_rad_per_s, classes, locals, rate_vel: &self.rate_field.vel_mps, dt };
+        let mirrors = &self.mirrors;
+        let view = View { sp, pos: &st.pos_m, vel: &st.vel_mps, spin: &st.spin_rad_per_s, classes, locals, rate_vel: &self.rate_field.vel_mps, mirrors, dt };
         let one = |c: &mut Contact, diss: &mut Dissipation| view.act(c, diss);
         let parts = &mut self.shares.0;
         parts.resize(st.contacts.len().div_ceil(CHUNK), Dissipation::default());
@@ -191,7 +231,7 @@ impl Model {
             };
             st.contacts.par_chunks_mut(CHUNK).zip(self.actions.par_chunks_mut(CHUNK)).zip(parts.par_iter_mut()).for_each(chunk);
             for (c, a) in st.contacts.iter().zip(&self.actions) {
-                scatter(&mut st.force_n, &mut st.moment_nm, c, a);
+                scatter(&mut st.force_n, &mut st.moment_nm, c, a, mirrors);
             }
         } else {
             // One thread: each action added to its spheres as it is made, in contact order (the
@@ -200,7 +240,7 @@ impl Model {
                 let mut diss = Dissipation::default();
                 for c in cs.iter_mut() {
                     let a = one(c, &mut diss);
-                    scatter(&mut st.force_n, &mut st.moment_nm, c, &a);
+                    scatter(&mut st.force_n, &mut st.moment_nm, c, &a, mirrors);
                 }
                 *d = diss;
             }
@@ -278,11 +318,11 @@ impl Model {
     /// only stain the supports' reactions (walls of held spheres passing through each other).
     pub fn search(&mut self) {
         let held = &self.spheres.held;
-        let mut pairs = detect::candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m, self.parallel());
-        pairs.retain(|&(i, j)| !(held[i as usize] && held[j as usize]));
+        let mut pairs = self.mirrors.candidates(&self.state.pos_m, &self.spheres.radius_m, self.skin_m, self.parallel());
+        pairs.retain(|&(i, j, _)| !(held[i as usize] && held[j as usize]));
         let old = std::mem::take(&mut self.state.contacts);
         let classes = |i: u32, j: u32| self.class_of(i, j);
-        let merged = detect::merge(old, &pairs, &self.state.pos_m, &self.spheres.radius_m, classes);
+        let merged = detect::merge(old, &pairs, &self.state.pos_m, &self.spheres.radius_m, &self.mirrors, classes);
         self.state.contacts = merged;
         self.state.searched_at_m = self.state.pos_m.clone();
         self.state.searches += 1;

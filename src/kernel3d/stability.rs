@@ -31,7 +31,10 @@ pub fn omega_max_sq(radius_m: &[f64], mass_kg: &[f64], inertia_kg_m2: &[f64], he
     let mut z = vec![0u32; mass_kg.len()];
     for l in links {
         z[l.ends[0]] += 1;
-        z[l.ends[1]] += 1;
+        // A sphere's contact with its own image (`mirror`) is one of its contacts.
+        if l.ends[1] != l.ends[0] {
+            z[l.ends[1]] += 1;
+        }
     }
     links.iter().map(|l| contact_bound(l, radius_m, mass_kg, inertia_kg_m2, held, &z)).fold(0.0, f64::max)
 }

@@ -101,6 +101,10 @@ impl History {
         }
         let (near, far) = detector.bonds_near_far(m);
         let (near0, far0) = *self.bonds_initial.get_or_insert((near, far));
+        // Momenta, masses and energies of the whole (`Layout::copies`).
+        let c = detector.layout.copies();
+        let (p_axial, ejecta_kg, ejecta_k, ejecta_p, target_p) = (c * p_axial, c * ejecta_kg, c * ejecta_k, c * ejecta_p, c * target_p);
+        let (mass, near_k, far_k, far_attached_k) = (c * mass, c * near_k, c * far_k, c * far_attached_k);
         let t = m.time_s();
         let resistance = match self.last {
             Some((t0, p0)) if t > t0 => (p0 - p_axial) / (t - t0),

@@ -361,7 +361,7 @@ impl Detector {
                 hi[k] = hi[k].max(p[a] + r);
             }
         }
-        let v = mom.map(|p| p / mass);
+        let v = lay.whole_velocity(mom.map(|p| p / mass));
         // Fragments.
         let (frags, of) = fragments::fragments(m, self.target.clone(), |e| self.faces[e - self.target.start]);
         let attached = |e: usize| frags[of[e - self.target.start] as usize].supported;
@@ -411,7 +411,10 @@ impl Detector {
         }
         // The back face's area (2D: width) its scab fragments took, as a crater's diameter.
         let lost: f64 = self.target.clone().filter(|&e| is_scab[of[e - self.target.start] as usize]).map(|e| self.back_share[e - self.target.start]).sum();
+        let lost = lost * lay.copies();
         let back_crater_m = if self.slice { lost } else { 2.0 * (lost / std::f64::consts::PI).sqrt() };
+        // Masses of the whole (fragment counts are the model's).
+        let (scab, spall) = ((scab.0, scab.1 * lay.copies()), (spall.0, spall.1 * lay.copies()));
         let mut attached_bonds = 0u64;
         m.each_bond(&mut |i, _| attached_bonds += u64::from(self.target.contains(&i) && attached(i)));
         // Wholly past the back face: below it and below any attached material under it.

@@ -548,6 +548,23 @@ pub struct Layout {
     pub thickness_m: f64,
     /// Concrete element radius, m.
     pub concrete_radius_m: f64,
+    /// The axes of the mirror planes through the impact axis the model is cut at (`[slab]
+    /// symmetry`): its masses, momenta and areas are 2^len of them of the whole's.
+    pub mirror_axes: Vec<usize>,
+}
+
+impl Layout {
+    /// How many copies of the model the whole holds.
+    pub fn copies(&self) -> f64 {
+        f64::from(1u32 << self.mirror_axes.len())
+    }
+
+    /// A velocity of the model as the whole's (m/s): the components across the mirror planes
+    /// cancel between the copies.
+    pub fn whole_velocity(&self, mut v: [f64; 3]) -> [f64; 3] {
+        self.mirror_axes.iter().for_each(|&a| v[a] = 0.0);
+        v
+    }
 }
 
 impl PenetrationScene {
@@ -918,6 +935,7 @@ impl PenetrationScene {
             v0_mps: v,
             thickness_m: thickness,
             concrete_radius_m: rc,
+            mirror_axes: vec![],
         };
         Ok((scene, layout))
     }

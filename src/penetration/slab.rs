@@ -35,7 +35,7 @@ use crate::kernel3d::solid::Solid;
 use crate::material::{CompactionSpec, FailureCriterion, RateSpec};
 use crate::packing3d::{Box3, Grading};
 use crate::scene::OutputSpec;
-use crate::scene3d::{self, Absorb3, Axis3, Body3, Damping3, Fix3, General3, Packing3, Scene3, TimeStep3};
+use crate::scene3d::{self, Absorb3, Axis3, Body3, Damping3, Fix3, General3, Mirror3, Packing3, Scene3, TimeStep3};
 use crate::shape3d::Projectile3;
 use crate::units::{M_PER_IN, fps_to_mps, in_to_m, lb_to_kg, lbs2_per_in4_to_kg_per_m3, psi_sqrt_in_to_pa_sqrt_m, psi_to_pa};
 
@@ -55,6 +55,24 @@ pub enum Edges {
     Absorbing,
 }
 
+/// How much of the slab and projectile the model holds (`kernel3d::mirror`): the whole, or the
+/// part on the high side of mirror planes through the impact axis — normal to z (half: the
+/// obliquity turns the projectile in the x–y plane, so z is always a symmetry), and normal to
+/// x too at normal incidence (quarter). Outcomes, masses and energies are reported for the
+/// whole.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Symmetry {
+    /// The whole slab and projectile.
+    #[default]
+    Full,
+    /// The half z ≥ the impact point's, one mirror plane.
+    Half,
+    /// The quarter x, z ≥ the impact point's, two mirror planes (normal impact at the centre
+    /// of the slab only).
+    Quarter,
+}
+
 /// `[slab]`: what only the 3D scene has (defaults in code).
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -62,6 +80,9 @@ pub struct Slab {
     /// How the side faces are held.
     #[serde(default)]
     pub edges: Edges,
+    /// How much of the slab and projectile is modelled (mirror planes through the impact axis).
+    #[serde(default, skip_serializing_if = "is_full")]
+    pub symmetry: Symmetry,
     /// The concrete's mean sphere radius at level 1 near the impact axis, in (the finest;
     /// halved per level).
     #[serde(default = "default_radius")]
@@ -116,6 +137,9 @@ fn default_fine_radius() -> f64 {
 fn default_growth() -> f64 {
     0.1
 }
+fn is_full(s: &Symmetry) -> bool {
+    *s == Symmetry::Full
+}
 fn default_steel_density() -> f64 {
     7.33e-4
 }
@@ -131,6 +155,7 @@ impl Default for Slab {
     fn default() -> Self {
         Slab {
             edges: Edges::default(),
+            symmetry: Symmetry::default(),
             element_radius_in: default_radius(),
             max_element_radius_in: default_max_radius(),
             fine_radius_in: default_fine_radius(),
@@ -189,6 +214,12 @@ impl PenetrationScene {
             }
         }
         scene3d::check_local_damping_ratio("slab.damping_ratio", s.damping_ratio)?;
+        if s.symmetry == Symmetry::Quarter {
+            let centred = self.projectile.impact_x_in.is_none_or(|x| x == 0.5 * self.target.length_in);
+            if self.projectile.angle_deg != 0.0 || !centred {
+                return Err(Error::input("slab.symmetry", "a quarter needs a normal impact at the centre of the slab (take half at an angle or off the centre)"));
+            }
+        }
         if let Some(e) = self.concrete.restitution
             && !(e > 0.0 && e <= 1.0)
         {
@@ -269,7 +300,27 @@ impl PenetrationScene {
         let (t, p, c, s) = (&self.target, &self.projectile, &self.concrete, self.slab());
         let (side, depth) = (in_to_m(t.length_in), in_to_m(t.depth_in));
         let (rc, rp) = (in_to_m(s.element_radius_in) * self.level_scale(), in_to_m(self.projectile_radius3_in()));
+        let (x0, z0) = (in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)), 0.5 * side);
+        // The mirror planes through the impact axis, (axis, where, m), and the part they leave.
+        let planes: Vec<(usize, f64)> = match s.symmetry {
+            Symmetry::Full => vec![],
+            Symmetry::Half => vec![(2, z0)],
+            Symmetry::Quarter => vec![(0, x0), (2, z0)],
+        };
+        let cut = |axis: usize| planes.iter().find(|p| p.0 == axis).map_or(0.0, |p| p.1);
         let slab_box = Box3 { x_min_m: 0.0, x_max_m: side, y_min_m: 0.0, y_max_m: depth, z_min_m: 0.0, z_max_m: side };
+        // The part of a packing of the whole: the spheres centred on the planes' high sides (one
+        // cut by a plane weighs its share there and overlaps its image, bonded to it:
+        // `scene3d::Scene3::mirror`); a packing made against the planes as walls put a layer
+        // bonded to nothing but its own images along them, two weak planes through the axis.
+        let share = 0.5f64.powi(planes.len() as i32);
+        let part = |p: crate::packing3d::Packing| {
+            if planes.is_empty() {
+                return p;
+            }
+            let v = share * p.volume_m3;
+            p.keep(|c, _| planes.iter().all(|&(a, at)| c[a] >= at), v)
+        };
         let compaction = c.compaction.map(|k| CompactionSpec { stiffness_ratio: k.stiffness_ratio, full_strain: k.full_strain * 2.0 / 3.0 });
         let concrete = Solid {
             name: "concrete".into(),
@@ -310,7 +361,6 @@ impl PenetrationScene {
             restitution: None,
             crushed_shear_strength_pa: None,
         };
-        let (x0, z0) = (in_to_m(p.impact_x_in.unwrap_or(0.5 * t.length_in)), 0.5 * side);
         // Graded about the projectile's path from the impact point, coarse beyond.
         let r_big = in_to_m(s.max_element_radius_in) * self.level_scale();
         let grading = (s.max_element_radius_in > s.element_radius_in).then(|| Grading {
@@ -323,10 +373,10 @@ impl PenetrationScene {
         // The front face: the top of the target's top spheres.
         // Built once per recipe (`packing3d::cache`): 7 s of a level-1 event.
         let recipe = format!("slab\nwalls {slab_box:?}\ngrading {grading:?}\nradius_m {rc:?}\nseed {}\nbond_gap_ratio {BOND_GAP_RATIO:?}", t.seed);
-        let target = crate::packing3d::cache::cached(&recipe, || match &grading {
+        let target = part(crate::packing3d::cache::cached(&recipe, || match &grading {
             Some(g) => crate::packing3d::random_dense_graded(&slab_box, g, rc, t.seed, BOND_GAP_RATIO),
             None => crate::packing3d::random_dense(&slab_box, rc, t.seed, BOND_GAP_RATIO),
-        })?;
+        })?);
         let front = (0..target.centres_m.len()).map(|e| target.centres_m[e][1] + target.radii_m[e]).fold(f64::NEG_INFINITY, f64::max);
         // Tail so that the tip is at the impact point, then back along the axis until the
         // lowest sphere clears the face by the standoff (at an angle the first to arrive is a
@@ -342,12 +392,14 @@ impl PenetrationScene {
                 format!("spheres of {:.4} in leave {} in the projectile (at least {MIN_PROJECTILE_SPHERES}): a smaller radius", rp / M_PER_IN, packed.centres_m.len()),
             ));
         }
+        // The part modelled sets the standoff (its lowest sphere, the whole's).
+        let packed = part(packed);
         let lowest = (0..packed.centres_m.len()).map(|e| packed.centres_m[e][1] - packed.radii_m[e]).fold(f64::INFINITY, f64::min);
         let back = (front + in_to_m(p.standoff_in) - lowest) / a.cos();
         shape.tail_m = [shape.tail_m[0] - axis[0] * back, shape.tail_m[1] - axis[1] * back, z0];
         // A projectile released inside the target would start with its spheres overlapping the
         // slab's, a spring force nothing put there: refused, as the 2D model refuses it.
-        let placed = shape.packing(rp, s.projectile_seed, BOND_GAP_RATIO)?;
+        let placed = part(shape.packing(rp, s.projectile_seed, BOND_GAP_RATIO)?);
         for (a_m, ra) in placed.centres_m.iter().zip(&placed.radii_m) {
             for (b_m, rb) in target.centres_m.iter().zip(&target.radii_m) {
                 let d2 = (0..3).map(|k| (a_m[k] - b_m[k]).powi(2)).sum::<f64>();
@@ -369,12 +421,22 @@ impl PenetrationScene {
             Edges::SimplySupported => 1.5 * r_big,
         };
         let all = Box3 { x_min_m: -pad, x_max_m: side + pad, y_min_m: -pad, y_max_m, z_min_m: -pad, z_max_m: side + pad };
-        let bands = [
+        // The side faces the part has (a mirror plane is none).
+        let (has_x_low, has_z_low) = (cut(0) == 0.0, cut(2) == 0.0);
+        let present = |name: &str| match name {
+            "x_low" => has_x_low,
+            "z_low" => has_z_low,
+            _ => true,
+        };
+        let bands: Vec<_> = [
             ("x_low", Box3 { x_max_m: band, ..all }),
             ("x_high", Box3 { x_min_m: side - band, ..all }),
             ("z_low", Box3 { z_max_m: band, ..all }),
             ("z_high", Box3 { z_min_m: side - band, ..all }),
-        ];
+        ]
+        .into_iter()
+        .filter(|(n, _)| present(n))
+        .collect();
         let kind = match s.edges {
             Edges::Clamped => "clamped",
             Edges::SimplySupported => "supported",
@@ -391,7 +453,12 @@ impl PenetrationScene {
                     ("z_low", Box3 { z_max_m: layer, ..all }, Axis3::Z),
                     ("z_high", Box3 { z_min_m: side - layer, ..all }, Axis3::Z),
                 ];
-                let absorb = faces.into_iter().map(|(n, region, normal)| Absorb3 { name: format!("{kind}_{n}"), region, normal, area_m2: side * depth }).collect();
+                // Each face's area in the part: its extent along the other side axis.
+                let across = |normal: Axis3| match normal {
+                    Axis3::X => side - cut(2),
+                    _ => side - cut(0),
+                };
+                let absorb = faces.into_iter().filter(|(n, ..)| present(n)).map(|(n, region, normal)| Absorb3 { name: format!("{kind}_{n}"), region, normal, area_m2: across(normal) * depth }).collect();
                 (vec![], absorb)
             }
             _ => (bands.into_iter().map(|(n, region)| Fix3 { name: format!("{kind}_{n}"), region, velocity_mps: [0.0; 3] }).collect(), vec![]),
@@ -433,6 +500,7 @@ impl PenetrationScene {
             absorb,
             load: vec![],
             probe: vec![],
+            mirror: planes.iter().map(|&(a, at_m)| Mirror3 { normal: if a == 0 { Axis3::X } else { Axis3::Z }, at_m }).collect(),
             output: OutputSpec { every_steps: 1_000_000 },
         };
         // The 3D scene's own checks name its fields; say which of this file's they come from.
@@ -453,6 +521,7 @@ impl PenetrationScene {
             v0_mps: v,
             thickness_m: f64::NAN,
             concrete_radius_m: rc,
+            mirror_axes: planes.iter().map(|p| p.0).collect(),
         };
         Ok((scene, layout, [target, placed]))
     }

@@ -14,6 +14,7 @@ use super::{Packing3, Scene3};
 use crate::error::{Error, Result};
 use crate::kernel3d::law::Class;
 use crate::kernel3d::solid::{RateContext, Solid};
+use crate::kernel3d::vec3::{norm, sub};
 use crate::kernel3d::{Builder, Model, solid, stiffness};
 use crate::packing3d::{self, Box3, Packing};
 use crate::simulation::{Built, Measure};
@@ -92,14 +93,29 @@ impl Scene3 {
                 bld.class(a, b, class);
             }
         }
+        let mirrors = self.mirrors();
+        bld.mirrors = mirrors.clone();
         let mut velocities = Vec::with_capacity(kinds);
         for (k, (b, p)) in self.body.iter().zip(&packings).enumerate() {
             let material = self.solid(k);
             let range = bld.body(&b.name, &p.centres_m, &p.radii_m, k as u16, material.density_kg_per_m3);
+            bld.weigh_cut_spheres(range.clone());
             bld.mass_total(range.clone(), material.density_kg_per_m3 * p.volume_m3);
             bld.damp_locally(range.clone(), b.local_damping_ratio);
             for &(i, j) in &p.bonds {
                 bld.bond(range.start + i as usize, range.start + j as usize);
+            }
+            // Across the symmetry planes, the packing's own rule: a gap below the bond gap
+            // ratio × the pair's mean nominal radius.
+            let nominal = |c: [f64; 3]| b.grading.as_ref().map_or(b.element_radius_m, |g| g.radius_at(c, b.element_radius_m));
+            let gap_max = b.bond_gap_ratio * b.grading.as_ref().map_or(b.element_radius_m, |g| g.max_radius_m);
+            for (i, j, image) in mirrors.candidates(&p.centres_m, &p.radii_m, gap_max, false) {
+                let (iu, ju) = (i as usize, j as usize);
+                let (ci, cj) = (p.centres_m[iu], mirrors.point(p.centres_m[ju], image));
+                let gap = norm(sub(cj, ci)) - p.radii_m[iu] - p.radii_m[ju];
+                if image != 0 && gap < b.bond_gap_ratio * 0.5 * (nominal(p.centres_m[iu]) + nominal(p.centres_m[ju])) {
+                    bld.bond_image(range.start + iu, range.start + ju, image);
+                }
             }
             velocities.push((range, b.velocity_mps));
         }

@@ -53,6 +53,10 @@ pub struct Scene3 {
     /// Probes recorded as time series.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub probe: Vec<Probe3>,
+    /// Symmetry planes (one per axis at most): the scene is the part on the high side of each
+    /// of a mirror-symmetric whole, its bodies packed against them (`kernel3d::mirror`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub mirror: Vec<Mirror3>,
     /// Output settings.
     #[serde(default)]
     pub output: OutputSpec,
@@ -201,7 +205,27 @@ pub struct Load3 {
     pub force_n: [f64; 3],
 }
 
+/// `[[mirror]]`: a symmetry plane of a 3D scene.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct Mirror3 {
+    /// The plane's normal.
+    pub normal: Axis3,
+    /// Where it lies along its normal, m.
+    pub at_m: f64,
+}
+
 impl Scene3 {
+    /// The kernel's symmetry planes.
+    pub fn mirrors(&self) -> crate::kernel3d::mirror::Mirrors {
+        let axis = |a: Axis3| match a {
+            Axis3::X => 0,
+            Axis3::Y => 1,
+            Axis3::Z => 2,
+        };
+        crate::kernel3d::mirror::Mirrors(self.mirror.iter().map(|m| crate::kernel3d::mirror::Mirror { axis: axis(m.normal), at_m: m.at_m }).collect())
+    }
+
     /// Parse TOML text; `origin` names the file in messages.
     pub fn from_toml(text: &str, origin: &Path) -> Result<Scene3> {
         let scene: Scene3 = parse(text, origin)?;
@@ -237,6 +261,14 @@ impl Scene3 {
         }
         if !(t.skin_ratio.is_finite() && t.skin_ratio > 0.0) {
             return Err(Error::input("time_step.skin_ratio", format!("must be a finite number > 0, got {}", t.skin_ratio)));
+        }
+        for (k, m) in self.mirror.iter().enumerate() {
+            if self.mirror[..k].iter().any(|o| o.normal == m.normal) {
+                return Err(Error::input(format!("mirror[{k}].normal"), "one plane per axis"));
+            }
+            if !m.at_m.is_finite() {
+                return Err(Error::input(format!("mirror[{k}].at_m"), format!("must be finite, got {}", m.at_m)));
+            }
         }
         if !(self.damping.alpha_per_s.is_finite() && self.damping.alpha_per_s >= 0.0) {
             return Err(Error::input("damping.alpha_per_s", format!("must be a finite number ≥ 0, got {}", self.damping.alpha_per_s)));

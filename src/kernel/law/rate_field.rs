@@ -48,6 +48,9 @@ pub struct RateField<const D: usize> {
     strides: [usize; D],
     /// The elements smoothed, in index order.
     members: Vec<u32>,
+    /// Symmetry planes (`kernel3d::mirror`) as (axis, the node index they pass through): the
+    /// velocity across a plane is zero on it (the mirrored elements' momenta cancel there).
+    planes: Vec<(usize, usize)>,
     // Scratch, remade every step.
     /// Per node: (Σ w m v (kg·m/s), Σ w m (kg)); then, for nodes with mass, the node's
     /// velocity (m/s) in the first.
@@ -74,6 +77,35 @@ impl<const D: usize> Default for RateField<D> {
 }
 
 impl<const D: usize> RateField<D> {
+    /// Make a symmetry plane normal to `axis` at `at_m` (m) pass through a layer of nodes, on
+    /// which the velocity across it is zero: the field the elements and their mirror images
+    /// would give, to rounding (a cell beside the plane reads only the plane's nodes and its
+    /// own side's; on the plane the images double the mass and cancel the normal momentum).
+    pub fn mirror(&mut self, axis: usize, at_m: f64) {
+        if let Some(k) = self.align(axis, at_m) {
+            self.planes.push((axis, k));
+        }
+    }
+
+    /// Shift the grid along `axis` so that a layer of nodes lies at `at_m` (m), one node more
+    /// keeping the extent; returns that layer's index (None: no grid). A whole model symmetric
+    /// about the plane then has the field its mirrored part has.
+    pub fn align(&mut self, axis: usize, at_m: f64) -> Option<usize> {
+        if self.members.is_empty() {
+            return None;
+        }
+        let h = self.spacing_m;
+        let k = ((at_m - self.origin_m[axis]) / h).ceil().max(0.0);
+        self.origin_m[axis] = at_m - k * h;
+        self.nodes[axis] += 1;
+        for a in 1..D {
+            self.strides[a] = self.strides[a - 1] * self.nodes[a - 1];
+        }
+        let count: usize = self.nodes.iter().product();
+        (self.mark, self.sums, self.touched, self.epoch) = (vec![0; count], vec![([0.0; D], 0.0); count], Vec::new(), 0);
+        Some(k as usize)
+    }
+
     /// The 2^D corners of a cell.
     const CORNERS: usize = 1 << D;
 
@@ -116,6 +148,7 @@ impl<const D: usize> RateField<D> {
             nodes,
             strides,
             members,
+            planes: Vec::new(),
             sums: vec![([0.0; D], 0.0); if empty { 0 } else { count }],
             vel_mps: if empty { Vec::new() } else { vec![[0.0; D]; elements] },
         }
@@ -195,6 +228,11 @@ impl<const D: usize> RateField<D> {
             if s.1 > 0.0 {
                 let inv = 1.0 / s.1;
                 s.0.iter_mut().for_each(|x| *x *= inv);
+            }
+            for &(a, k) in &self.planes {
+                if node as usize / self.strides[a] % self.nodes[a] == k {
+                    s.0[a] = 0.0;
+                }
             }
         }
         for (&e, c) in self.members.iter().zip(&self.cells) {

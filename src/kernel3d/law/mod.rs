@@ -14,7 +14,6 @@ use serde::{Deserialize, Serialize};
 
 use super::contact::{Bond, Contact};
 use super::vec3::{V3, add, carried, cross, dot, in_plane, norm, scale, sub};
-use crate::kernel::law::rate_field::RateField;
 use crate::kernel::law::{compaction, failure, friction, normal, rate};
 
 /// Parameters of one kind of contact: configuration, fixed when the model is built. Every
@@ -233,7 +232,7 @@ crate::kernel::ledger::mechanisms! {
 /// velocities (central differences, as in 2D); the history's frame turns from the stored normal
 /// to the present one.
 pub fn act(c: &mut Contact, class: &Class, g: &Pair, dt_s: f64, diss: &mut Dissipation) -> Action {
-    act_at(c, class, &class.at(mean_radius_m(g.r)), g, &[], dt_s, diss)
+    act_at(c, class, &class.at(mean_radius_m(g.r)), g, None, dt_s, diss)
 }
 
 /// The mean radius r̄ a contact's springs are scaled by (`Class::at`), m, of radii `r` (m).
@@ -244,10 +243,10 @@ pub fn mean_radius_m(r: [f64; 2]) -> f64 {
 
 /// [`act`] with the class's springs at this contact, `k` = `class.at(mean_radius_m(g.r))`, given:
 /// the step takes them once per class when every sphere has the same radius (the same bits).
-/// `rate_vel` is the rate part's smoothed velocity field per sphere, m/s (empty: each bond
-/// reads its own pair's velocities; `kernel::law::rate_field`).
+/// `rate` is the rate part's smoothed velocity at i and at j, m/s (None: the bond reads its
+/// own pair's velocities; `kernel::law::rate_field`).
 #[inline(always)]
-pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V3], dt_s: f64, diss: &mut Dissipation) -> Action {
+pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate: Option<[V3; 2]>, dt_s: f64, diss: &mut Dissipation) -> Action {
     let d = norm(g.dx_m);
     let n = scale(1.0 / d, g.dx_m);
     let n_old = c.normal;
@@ -267,7 +266,7 @@ pub fn act_at(c: &mut Contact, class: &Class, k: &Local, g: &Pair, rate_vel: &[V
             // One source for a bond with its rate or compaction state (`extra`) and without
             // (compiled twice: the static bond pays nothing for the parts it does not have).
             let at = Geometry { d, n, n_old, opening, step, slip, shear_last };
-            let kept = if c.extra.is_some() { bonded::<true>(c, class, k, g, &at, rate_vel, dt_s, diss) } else { bonded::<false>(c, class, k, g, &at, rate_vel, dt_s, diss) };
+            let kept = if c.extra.is_some() { bonded::<true>(c, class, k, g, &at, rate, dt_s, diss) } else { bonded::<false>(c, class, k, g, &at, rate, dt_s, diss) };
             match kept {
                 Some(fs) => fs,
                 // Broken in tension past the plateau: apart, carrying nothing.
@@ -358,7 +357,7 @@ struct Geometry {
 /// the shear force on j (N), or None when the bond broke (its energy booked).
 #[inline(always)]
 #[allow(clippy::too_many_arguments)]
-fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair, at: &Geometry, rate_vel: &[V3], dt_s: f64, diss: &mut Dissipation) -> Option<(f64, V3)> {
+fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair, at: &Geometry, rate: Option<[V3; 2]>, dt_s: f64, diss: &mut Dissipation) -> Option<(f64, V3)> {
     let Geometry { d, n, n_old, opening, step, slip, shear_last } = *at;
     let [ri, rj] = g.r;
     // The rate part's ratios (moduli, tensile and compressive strength), the 2D
@@ -368,7 +367,10 @@ fn bonded<const PARTS: bool>(c: &mut Contact, class: &Class, k: &Local, g: &Pair
         && class.rate.enabled
         && let Some(x) = c.extra.as_deref_mut()
     {
-        let vn = if rate_vel.is_empty() { dot(sub(g.v[1], g.v[0]), n) } else { RateField::<3>::normal_velocity_mps(rate_vel, c.i, c.j, n, 0.0) };
+        let vn = match rate {
+            None => dot(sub(g.v[1], g.v[0]), n),
+            Some([a, b]) => dot(sub(b, a), n),
+        };
         ratios = class.rate.update(&mut x.rate_per_s, &mut x.rate_mean_per_s, rate::centred_mps(vn, &mut x.vn_last_mps), 1.0 / x.length0_m);
         // Secant moduli: the springs keep their zero (`kernel::law::rate`).
         let ratio = if opening - c.plastic_opening_m < 0.0 { ratios[0] } else { ratios[1] };
