@@ -155,6 +155,8 @@ mod tests {
                 }
             }
         }
+        // One sphere cut by both planes (it meets all three of its images).
+        pos[0] = [1.2, pos[0][1], 2.2];
         let skin = 0.05;
         let mut brute = Vec::new();
         for i in 0..pos.len() {
