@@ -8,7 +8,6 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hasher};
 
 use super::contact::{Bond, Contact};
-use super::mirror::Mirrors;
 use super::vec3::{V3, norm, scale, sub};
 
 /// A hasher for cell keys: a multiply and rotate per 8 bytes. The std hasher (SipHash, made to
@@ -102,8 +101,9 @@ pub fn candidates(pos_m: &[V3], radius_m: &[f64], skin_m: f64, parallel: bool) -
 
 /// The contact list after a search: the old contacts that are bonds or still candidates, in
 /// order, and a fresh frictional contact for each new candidate (i, j, image) (`class(i, j)`,
-/// rest length r_i + r_j, normal along the centres, j seen through `image`'s planes).
-pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32, u8)], pos_m: &[V3], radius_m: &[f64], mirrors: &Mirrors, class: impl Fn(u32, u32) -> u16) -> Vec<Contact> {
+/// rest length r_i + r_j, normal along the centres, j seen through `image`'s planes:
+/// `reflect(p, image)`, `mirror::Mirrors::point`).
+pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32, u8)], pos_m: &[V3], radius_m: &[f64], reflect: impl Fn(V3, u8) -> V3, class: impl Fn(u32, u32) -> u16) -> Vec<Contact> {
     let mut out = Vec::with_capacity(pairs.len());
     let mut old = old.into_iter().peekable();
     let mut fresh = pairs.iter().peekable();
@@ -125,7 +125,7 @@ pub fn merge(old: Vec<Contact>, pairs: &[(u32, u32, u8)], pos_m: &[V3], radius_m
             }
             (_, Some((i, j, image))) => {
                 let (iu, ju) = (i as usize, j as usize);
-                let dx = sub(mirrors.point(pos_m[ju], image), pos_m[iu]);
+                let dx = sub(reflect(pos_m[ju], image), pos_m[iu]);
                 let n = scale(1.0 / norm(dx), dx);
                 let mut c = Contact::new(i, j, class(i, j), Bond::Frictional, radius_m[iu] + radius_m[ju], n);
                 c.image = image;

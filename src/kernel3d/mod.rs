@@ -322,7 +322,8 @@ impl Model {
         pairs.retain(|&(i, j, _)| !(held[i as usize] && held[j as usize]));
         let old = std::mem::take(&mut self.state.contacts);
         let classes = |i: u32, j: u32| self.class_of(i, j);
-        let merged = detect::merge(old, &pairs, &self.state.pos_m, &self.spheres.radius_m, &self.mirrors, classes);
+        let reflect = |p: V3, image: u8| self.mirrors.point(p, image);
+        let merged = detect::merge(old, &pairs, &self.state.pos_m, &self.spheres.radius_m, reflect, classes);
         self.state.contacts = merged;
         self.state.searched_at_m = self.state.pos_m.clone();
         self.state.searches += 1;
