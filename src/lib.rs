@@ -17,6 +17,7 @@ pub mod cli;
 pub mod converge;
 pub mod error;
 pub mod fnv;
+pub mod keep;
 pub mod empirical;
 
 pub use error::{Error, Result};

@@ -122,7 +122,12 @@ fn a_damped_pile_counts_its_losses_and_its_ledger_closes() {
          worst |residual|/in {worst:.2e}; {touching} of 400 looks in contact",
         t.energy_in_j, t.kinetic_energy_j, t.strain_energy_j
     );
-    assert!(touching > 300, "the pile settles in contact");
+    // In contact at most looks and at rest at the end. (Was: in contact at more than 300 of
+    // the 400 looks, 315 on the pair's reduced mass; with the dashpot on the contact's
+    // effective mass an off-centre contact is no longer over-damped and the pile bounces
+    // longer, 272 looks, but ends stiller: kinetic 2.4e-4 of the energy in, 1.7e-3 before.)
+    assert!(touching > 200, "the pile is in contact at {touching} of 400 looks");
+    assert!(t.kinetic_energy_j < 1e-3 * t.energy_in_j, "the pile has not settled: kinetic {:e} J", t.kinetic_energy_j);
     assert!(t.dissipated_j > 0.5 * t.energy_in_j && damping > 0.0 && sliding > 0.0, "losses {}", t.dissipated_j);
     assert!(worst < 1e-2, "ledger residual {worst:e}");
 }

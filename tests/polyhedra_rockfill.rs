@@ -1,7 +1,8 @@
 //! The Voronoi rockfill: its sizes follow the asked grading, and a packed rockfill is the same
 //! to the bit each time it is made from the same recipe and seed.
 
-use demsweep::polyhedra::Law;
+mod polyhedra_support;
+
 use demsweep::polyhedra::rockfill::{Grading, rocks, size_of};
 use demsweep::polyhedra::settle::{Packing, pack};
 use nalgebra::Vector3;
@@ -47,15 +48,7 @@ fn rock_sizes_follow_the_asked_grading() {
 }
 
 fn packing() -> Packing {
-    Packing {
-        density: 2650.0,
-        law: Law { stiffness: 1e6, exponent: 1.0, shear_stiffness: 5e5, friction: 0.5, restitution: 0.3 },
-        damping_per_s: 5.0,
-        fraction: 0.5,
-        lid_speed_mps: 0.5,
-        lid_pressure_pa: 2e4,
-        phase_s: 0.5,
-    }
+    polyhedra_support::quick_packing()
 }
 
 #[test]

@@ -78,6 +78,14 @@ fn the_reduced_layer_slows_the_projectile_and_a_resumed_run_is_the_same() {
     assert!(v > 0.0 && v < 1200.0, "residual {v}");
     assert!(get("projectile_speed_mps_max") <= 1200.0 * (1.0 + 1e-9), "sped up");
     assert!(s.energy_error.abs() < 2e-2, "ledger {}", s.energy_error);
+    // No walls and no gravity in the event: the momentum the projectile brought is all there
+    // is, shared with the rocks, to rounding.
+    let bodies = &whole.model.state.bodies;
+    let momentum: nalgebra::Vector3<f64> = bodies.iter().map(|b| b.velocity * b.mass).sum();
+    let brought = scene.rockfill.projectile.mass_kg * scene.rockfill.projectile.speed_mps;
+    let drift = (momentum - nalgebra::Vector3::new(brought, 0.0, 0.0)).norm() / brought;
+    println!("momentum: {drift:.1e} of the projectile's off what it brought");
+    assert!(drift < 1e-12, "momentum {drift:e}");
     // Stopped at a checkpoint half way and resumed: the same tables.
     let mut saved = None;
     let mut save = |c: &RunCheckpoint| {

@@ -133,7 +133,7 @@ impl Walls for Box3 {
 }
 
 /// A generated assembly of spheres.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Packing {
     /// Sphere centres [x, y, z], m, in layer order (z slabs, then y rows, then x).
     pub centres_m: Vec<[f64; 3]>,

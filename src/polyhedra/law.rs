@@ -52,7 +52,8 @@ impl Law {
     }
 
     /// The force on B (N) at the contact `c`, with `approach` = v_B − v_A at c_M (m/s), `mass`
-    /// the pair's reduced mass (kg), over a step of `dt` (s); `shear` (m), the tangential
+    /// the pair's effective mass along the normal at the contact point (kg; for a central
+    /// contact, the reduced mass), over a step of `dt` (s); `shear` (m), the tangential
     /// spring's stretch, is carried into the new contact plane, stretched and capped.
     ///
     /// The dashpot is 2ζ√(m k) with k the spring's tangent stiffness n k_n δ^(n−1): exactly e

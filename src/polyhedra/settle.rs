@@ -5,13 +5,15 @@
 
 use std::time::Instant;
 
-use nalgebra::Vector3;
+use nalgebra::{Quaternion, UnitQuaternion, Vector3};
+use serde::{Deserialize, Serialize};
 
 use super::body::Body;
 use super::container::{as_given, walls};
 use super::kernel::{Model, ModelBuilder};
 use super::law::Law;
-use super::rockfill::Rocks;
+use super::rockfill::{Grading, Rocks, rocks};
+use super::rotation::Spin;
 use super::shape::Polyhedron;
 use crate::error::{Error, Result};
 
@@ -35,7 +37,8 @@ pub struct Packing {
 }
 
 /// A packed rockfill.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(into = "Kept", from = "Kept")]
 pub struct Packed {
     /// The rocks' shapes (body frame).
     pub shapes: Vec<Polyhedron>,
@@ -131,6 +134,169 @@ pub fn pack(rocks: &Rocks, lo: &Vector3<f64>, hi: &Vector3<f64>, p: &Packing) ->
         loaded_j,
         elastic_j: m.state.ledger.elastic_j,
     })
+}
+
+/// Packed rockfills, from the code that cuts and packs them: kept by `crate::keep` under a
+/// recipe that names the box, the grading and the packing ([`cached`]).
+pub const KIND: crate::keep::Kind = crate::keep::Kind {
+    name: "demsweep rockfill 1",
+    sources: || {
+        &[
+            include_str!("settle.rs"),
+            include_str!("rockfill.rs"),
+            include_str!("voronoi.rs"),
+            include_str!("clip.rs"),
+            include_str!("container.rs"),
+            include_str!("shape.rs"),
+            include_str!("hull.rs"),
+            include_str!("mass.rs"),
+            include_str!("body.rs"),
+            include_str!("rotation.rs"),
+            include_str!("law.rs"),
+            include_str!("pair.rs"),
+            include_str!("patch.rs"),
+            include_str!("detect.rs"),
+            include_str!("gjk.rs"),
+            include_str!("epa.rs"),
+            include_str!("simplex.rs"),
+            include_str!("support.rs"),
+            include_str!("kernel/mod.rs"),
+            include_str!("kernel/broad.rs"),
+            include_str!("kernel/build.rs"),
+            include_str!("kernel/state.rs"),
+            include_str!("kernel/step.rs"),
+            include_str!("../lattice.rs"),
+        ]
+    },
+};
+
+/// The rocks of `grading` cut from the box `lo`–`hi` and packed as `p` says, built once per
+/// recipe and kept (`crate::keep`: in memory for the process, on disk for the machine).
+pub fn cached(grading: &Grading, lo: &Vector3<f64>, hi: &Vector3<f64>, p: &Packing) -> Result<Packed> {
+    crate::keep::cached(&KIND, &recipe(grading, lo, hi, p), || pack(&rocks(grading, lo, hi)?, lo, hi, p))
+}
+
+/// The recipe of a packed rockfill: every input, f64s by their `Debug` (which round-trips).
+pub fn recipe(grading: &Grading, lo: &Vector3<f64>, hi: &Vector3<f64>, p: &Packing) -> String {
+    format!("rockfill\nbox {:?} {:?}\n{grading:?}\n{p:?}", lo.as_slice(), hi.as_slice())
+}
+
+/// A packed rockfill as kept: vectors as arrays, quaternions as [w, i, j, k].
+#[derive(Serialize, Deserialize)]
+struct Kept {
+    shapes: Vec<KeptShape>,
+    bodies: Vec<KeptBody>,
+    top_m: f64,
+    fraction: f64,
+    pressure_capped: bool,
+    steps: u64,
+    wall_s: f64,
+    kinetic_j: f64,
+    loaded_j: f64,
+    elastic_j: f64,
+}
+
+#[derive(Serialize, Deserialize)]
+struct KeptShape {
+    vertices: Vec<[f64; 3]>,
+    faces: Vec<Vec<usize>>,
+    normals: Vec<[f64; 3]>,
+    edges: Vec<(usize, usize)>,
+    volume: f64,
+    principal: [f64; 3],
+    rest_position: [f64; 3],
+    rest_orientation: [f64; 4],
+}
+
+#[derive(Serialize, Deserialize)]
+struct KeptBody {
+    mass: f64,
+    inertia: [f64; 3],
+    position: [f64; 3],
+    velocity: [f64; 3],
+    orientation: [f64; 4],
+    momentum: [f64; 3],
+}
+
+fn quaternion(q: &UnitQuaternion<f64>) -> [f64; 4] {
+    [q.w, q.i, q.j, q.k]
+}
+
+fn unit([w, i, j, k]: [f64; 4]) -> UnitQuaternion<f64> {
+    UnitQuaternion::new_unchecked(Quaternion::new(w, i, j, k))
+}
+
+fn arrays(v: &[Vector3<f64>]) -> Vec<[f64; 3]> {
+    v.iter().map(|x| (*x).into()).collect()
+}
+
+fn vectors(v: Vec<[f64; 3]>) -> Vec<Vector3<f64>> {
+    v.into_iter().map(Vector3::from).collect()
+}
+
+impl From<Packed> for Kept {
+    fn from(p: Packed) -> Self {
+        let shapes = p
+            .shapes
+            .into_iter()
+            .map(|s| KeptShape {
+                vertices: arrays(&s.vertices),
+                faces: s.faces,
+                normals: arrays(&s.normals),
+                edges: s.edges,
+                volume: s.volume,
+                principal: s.principal.into(),
+                rest_position: s.rest_position.into(),
+                rest_orientation: quaternion(&s.rest_orientation),
+            })
+            .collect();
+        let bodies = p
+            .bodies
+            .iter()
+            .map(|b| KeptBody {
+                mass: b.mass,
+                inertia: b.inertia.into(),
+                position: b.position.into(),
+                velocity: b.velocity.into(),
+                orientation: quaternion(&b.spin.orientation),
+                momentum: b.spin.momentum.into(),
+            })
+            .collect();
+        let Packed { top_m, fraction, pressure_capped, steps, wall_s, kinetic_j, loaded_j, elastic_j, .. } = p;
+        Kept { shapes, bodies, top_m, fraction, pressure_capped, steps, wall_s, kinetic_j, loaded_j, elastic_j }
+    }
+}
+
+impl From<Kept> for Packed {
+    fn from(k: Kept) -> Self {
+        let shapes = k
+            .shapes
+            .into_iter()
+            .map(|s| Polyhedron {
+                vertices: vectors(s.vertices),
+                faces: s.faces,
+                normals: vectors(s.normals),
+                edges: s.edges,
+                volume: s.volume,
+                principal: s.principal.into(),
+                rest_position: s.rest_position.into(),
+                rest_orientation: unit(s.rest_orientation),
+            })
+            .collect();
+        let bodies = k
+            .bodies
+            .into_iter()
+            .map(|b| Body {
+                mass: b.mass,
+                inertia: b.inertia.into(),
+                position: b.position.into(),
+                velocity: b.velocity.into(),
+                spin: Spin { orientation: unit(b.orientation), momentum: b.momentum.into() },
+            })
+            .collect();
+        let Kept { top_m, fraction, pressure_capped, steps, wall_s, kinetic_j, loaded_j, elastic_j, .. } = k;
+        Packed { shapes, bodies, top_m, fraction, pressure_capped, steps, wall_s, kinetic_j, loaded_j, elastic_j }
+    }
 }
 
 /// Half the lid's thickness, m.

@@ -77,3 +77,16 @@ pub fn by_divergence(vertices: &[Vector3<f64>], faces: &[Vec<usize>]) -> (f64, V
     let about = second - centroid * centroid.transpose() * v;
     (v, centroid + o, Matrix3::identity() * about.trace() - about)
 }
+
+/// A quick packing of small rocks (soft law, short phases), for tests of the packed rockfill.
+pub fn quick_packing() -> demsweep::polyhedra::settle::Packing {
+    demsweep::polyhedra::settle::Packing {
+        density: 2650.0,
+        law: demsweep::polyhedra::Law { stiffness: 1e6, exponent: 1.0, shear_stiffness: 5e5, friction: 0.5, restitution: 0.3 },
+        damping_per_s: 5.0,
+        fraction: 0.5,
+        lid_speed_mps: 0.5,
+        lid_pressure_pa: 2e4,
+        phase_s: 0.5,
+    }
+}

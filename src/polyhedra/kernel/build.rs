@@ -137,7 +137,7 @@ impl ModelBuilder {
         let n = self.bodies.len();
         Ok(Model {
             initial_m: self.bodies.iter().map(|b| b.position.into()).collect(),
-            state: State { bodies: self.bodies, touches: Vec::new(), contact_force_n: vec![[0.0; 3]; n], steps: 0, ledger: Ledger::default() },
+            state: State { bodies: self.bodies, touches: Vec::new(), contact_force_n: vec![[0.0; 3]; n], steps: 0, ledger: Ledger::default(), dissipated_by_kinds: vec![[0.0; 2]; self.kinds * self.kinds + 1] },
             shapes: self.shapes,
             members: self.members,
             laws: self.laws,

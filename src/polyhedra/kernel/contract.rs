@@ -6,7 +6,7 @@ use super::Model;
 use crate::error::{Error, Result};
 use crate::simulation::{Bodies, Simulation, Tally, Threading};
 
-const MAGIC: [u8; 8] = *b"DEMSPLY\x01";
+const MAGIC: [u8; 8] = *b"DEMSPLY\x02";
 
 impl Bodies for Model {
     fn time_s(&self) -> f64 {

@@ -55,6 +55,18 @@ pub struct State {
     pub steps: u64,
     /// The ledger.
     pub ledger: Ledger,
+    /// The ledger's contact losses split by the pair's kinds: [dashpot, sliding] (J) at
+    /// `a × kinds + b` (a ≤ b) for two free bodies of kinds a and b, and at `kinds²` for a
+    /// pair with a held body (a wall).
+    pub dissipated_by_kinds: Vec<[f64; 2]>,
+}
+
+impl State {
+    /// [dashpot, sliding] losses so far (J) between free bodies of kinds `a` and `b` of
+    /// `kinds`, or (`None`) between a free body and a held one.
+    pub fn dissipated_between(&self, kinds: usize, pair: Option<(usize, usize)>) -> [f64; 2] {
+        self.dissipated_by_kinds[pair.map_or(kinds * kinds, |(a, b)| a.min(b) * kinds + a.max(b))]
+    }
 }
 
 /// One body's motion as saved.
@@ -74,6 +86,7 @@ struct Saved {
     contact_force_n: Vec<[f64; 3]>,
     steps: u64,
     ledger: Ledger,
+    dissipated_by_kinds: Vec<[f64; 2]>,
 }
 
 impl State {
@@ -87,7 +100,7 @@ impl State {
                 Motion { x: b.position.into(), v: b.velocity.into(), q: [q.w, q.i, q.j, q.k], l: b.spin.momentum.into() }
             })
             .collect();
-        let saved = Saved { motion, touches: self.touches.clone(), contact_force_n: self.contact_force_n.clone(), steps: self.steps, ledger: self.ledger };
+        let saved = Saved { motion, touches: self.touches.clone(), contact_force_n: self.contact_force_n.clone(), steps: self.steps, ledger: self.ledger, dissipated_by_kinds: self.dissipated_by_kinds.clone() };
         postcard::to_stdvec(&saved).expect("the state serialises")
     }
 
@@ -97,6 +110,9 @@ impl State {
         let saved: Saved = postcard::from_bytes(bytes).map_err(|e| format!("damaged: {e}"))?;
         if saved.motion.len() != self.bodies.len() || saved.contact_force_n.len() != self.bodies.len() {
             return Err(format!("{} bodies in the checkpoint, {} in the scene", saved.motion.len(), self.bodies.len()));
+        }
+        if saved.dissipated_by_kinds.len() != self.dissipated_by_kinds.len() {
+            return Err(format!("{} kinds' losses in the checkpoint, {} in the scene", saved.dissipated_by_kinds.len(), self.dissipated_by_kinds.len()));
         }
         if saved.touches.iter().any(|t| t.i >= t.j || t.j as usize >= self.bodies.len()) {
             return Err("a contact names a body the scene has not".into());
@@ -111,6 +127,7 @@ impl State {
         self.contact_force_n = saved.contact_force_n;
         self.steps = saved.steps;
         self.ledger = saved.ledger;
+        self.dissipated_by_kinds = saved.dissipated_by_kinds;
         Ok(())
     }
 }

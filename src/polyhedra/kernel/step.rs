@@ -64,10 +64,14 @@ impl Model {
         let n = self.members.len();
         let (mut force, mut torque) = (vec![Vector3::zeros(); n], vec![Vector3::zeros(); n]);
         let (mut touches, mut elastic) = (Vec::new(), 0.0);
-        let ledger = &mut self.state.ledger;
+        let (ledger, split) = (&mut self.state.ledger, &mut self.state.dissipated_by_kinds);
         for (&(i, j), r) in candidates.iter().zip(found) {
             let Some((p, act, shear)) = r else { continue };
             let (i, j) = (i as usize, j as usize);
+            let (a, b) = (&self.members[i], &self.members[j]);
+            let class = if a.held || b.held { self.kinds * self.kinds } else { a.kind.min(b.kind) * self.kinds + a.kind.max(b.kind) };
+            split[class][0] += act.damping_j;
+            split[class][1] += act.friction_j;
             force[i] += p.force_a;
             torque[i] += p.torque_a;
             force[j] += p.force_b;

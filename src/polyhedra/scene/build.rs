@@ -11,7 +11,8 @@ use super::super::body::Body;
 use super::super::kernel::{Model, ModelBuilder};
 use super::super::law::Law;
 use super::super::rockfill::rocks;
-use super::super::settle::{Packed, Packing, pack};
+use super::super::rockfill::Grading;
+use super::super::settle::{Packed, Packing, cached, pack};
 use super::RockfillScene;
 use super::probe::{Probe, Quantity};
 use crate::error::Result;
@@ -22,18 +23,30 @@ const KINDS: usize = 2;
 
 impl RockfillScene {
     /// The packed layer: cut from a box as tall as the layer times the asked fraction over the
-    /// cells' fraction q̄³, so that compacted it stands about the layer's height.
+    /// cells' fraction q̄³, so that compacted it stands about the layer's height. Built once per
+    /// recipe and kept (`settle::cached`).
     pub fn pack(&self) -> Result<Packed> {
+        let (grading, lo, hi, packing) = self.packing_recipe()?;
+        cached(&grading, &lo, &hi, &packing)
+    }
+
+    /// The packed layer built afresh, not kept.
+    pub fn pack_afresh(&self) -> Result<Packed> {
+        let (grading, lo, hi, packing) = self.packing_recipe()?;
+        pack(&rocks(&grading, &lo, &hi)?, &lo, &hi, &packing)
+    }
+
+    /// What the layer is packed from: its grading, the box it is cut from, the packing.
+    pub fn packing_recipe(&self) -> Result<(Grading, Vector3<f64>, Vector3<f64>, Packing)> {
         self.validate()?;
         let r = &self.rockfill;
         let [l, w, h] = r.layer.size_m;
         let tall = h * (r.packing.fraction / r.layer.grade.powi(3)).max(1.0);
         let (lo, hi) = (Vector3::zeros(), Vector3::new(l, w, tall));
-        let cut = rocks(&self.grading(), &lo, &hi)?;
         let p = &r.packing;
         let law = Law { stiffness: p.stiffness_n_per_m, exponent: 1.0, shear_stiffness: 0.5 * p.stiffness_n_per_m, friction: r.rock_law.friction, restitution: r.rock_law.restitution };
         let packing = Packing { density: r.layer.density_kg_per_m3, law, damping_per_s: p.damping_per_s, fraction: p.fraction, lid_speed_mps: p.lid_speed_mps, lid_pressure_pa: p.lid_pressure_pa, phase_s: p.phase_s };
-        pack(&cut, &lo, &hi, &packing)
+        Ok((self.grading(), lo, hi, packing))
     }
 
     /// The event's model on a packed layer, and what the run records.
@@ -80,10 +93,12 @@ impl RockfillScene {
 
     /// Packs the layer and builds the event on it.
     pub fn build(&self) -> Result<Built<Model>> {
+        let started = std::time::Instant::now();
         let packed = self.pack()?;
         eprintln!(
-            "{}: {} rocks packed to a fraction {:.3} under {:.3} m ({}), {} steps in {:.1} s; packing springs {:.3e} J loaded, {:.3e} J once unloaded",
+            "{}: packed layer ready in {:.2} s; {} rocks packed to a fraction {:.3} under {:.3} m ({}), {} steps in {:.1} s when built; packing springs {:.3e} J loaded, {:.3e} J once unloaded",
             self.rockfill.name,
+            started.elapsed().as_secs_f64(),
             packed.bodies.len(),
             packed.fraction,
             packed.top_m,
